@@ -1,0 +1,65 @@
+// Rigid polygonal blocks stored as struct-of-arrays.
+//
+// Design: the cycle walks blocks by index, so every per-block quantity the cycle touches lives in
+// its own flat vector (positions, velocities, forces, inverse masses). Vertex geometry is stored
+// once in the block's own frame (relative to its centroid, at rotation zero) in flat arrays with
+// an offset table, and the world positions are a cache refreshed after each integration. Cold
+// data (user names, groups) sit beside the hot arrays and are only read by scripts and output.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+
+// Which degrees of freedom of a block are held at a prescribed velocity.
+enum Fixity : uint8_t { kFree = 0, kFixX = 1, kFixY = 2, kFixRot = 4, kFixAll = 7 };
+
+struct Blocks {
+  // Motion, at the centroid: position and rotation at t, velocities at t - dt/2.
+  std::vector<double> x, y, theta;
+  std::vector<double> vx, vy, omega;
+  // Force and moment resultants of the current cycle (before damping).
+  std::vector<double> fx, fy, moment;
+  // Sum of magnitudes of all forces applied to the block (for the unbalanced-force ratio).
+  std::vector<double> applied;
+  // Centroid at creation, for displacements.
+  std::vector<double> x_ref, y_ref;
+  // Mass properties (the inverse is zero on a fixed degree of freedom).
+  std::vector<double> mass, inertia, inv_mass, inv_inertia;
+  // Fixity bits and the velocities prescribed on fixed degrees of freedom.
+  std::vector<uint8_t> fixity;
+  std::vector<double> fixed_vx, fixed_vy, fixed_omega;
+  // Vertices of block b are [vert_begin[b], vert_begin[b+1]) in the vertex arrays.
+  std::vector<uint32_t> vert_begin{0};
+  // Per vertex, in the block frame: corner position and rounded-arc centre.
+  std::vector<Vec2> local_vertex, local_arc_centre;
+  std::vector<double> arc_radius, round_length;
+  std::vector<uint8_t> convex;
+  // Per vertex, world cache refreshed after integration.
+  std::vector<Vec2> world_vertex, world_arc_centre;
+  // Per block geometry: area, perimeter, largest centroid-to-vertex distance.
+  std::vector<double> area, perimeter, bound_radius;
+  // Cold data.
+  std::vector<int> group, material;
+  std::vector<int> id;  // the user's 1-based block number
+
+  size_t size() const { return x.size(); }
+  uint32_t vertex_count(size_t b) const { return vert_begin[b + 1] - vert_begin[b]; }
+  // Adds a block from counter-clockwise vertices; returns its index.
+  size_t add(const std::vector<Vec2>& ccw_pts, double rounding, double density, int group_id,
+             int material_id);
+  // Mass properties from area and density (after a material change).
+  void set_density(size_t b, double density);
+  // Recomputes the world vertex cache of one block from its position and rotation.
+  void update_world(size_t b);
+  // World vertices of a block as a polygon (for output and checks).
+  std::vector<Vec2> world_polygon(size_t b) const;
+  // Applies the fixity bits to the inverse masses.
+  void refresh_inverse_mass(size_t b);
+};
+
+}  // namespace tessera

@@ -1,0 +1,32 @@
+// Geometry of a rounded corner against a block (chapter 5.2.2, cases 2 and 3).
+#pragma once
+
+#include <cstdint>
+
+#include "tessera/blocks.hpp"
+
+namespace tessera {
+
+// The feature of a block nearest to a rounded corner, with the contact geometry it gives.
+struct FeatureHit {
+  uint8_t kind = 0;      // ContactKind
+  uint32_t feature = 0;  // global vertex index: the corner, or the start of the edge
+  double gap = 0.0;      // negative when overlapping
+  Vec2 normal = Vec2::Zero();  // unit, from the block towards the corner
+  Vec2 point = Vec2::Zero();   // middle of the overlap
+  double chord = 0.0;          // chord of the arc across the edge or the other arc
+};
+
+// Searches the features of block b nearest to the arc (centre c, radius r). Features are
+// numbered 2k (corner k) and 2k+1 (edge from vertex k to k+1), k local to b; the search covers
+// `count` features starting at `first` (modulo the block's feature count). Corners of b are
+// skipped unless `corners` is set. Returns false when no feature has c within its reach.
+bool nearest_feature(const Blocks& blocks, uint32_t b, const Vec2& c, double r, bool corners,
+                     int first, int count, FeatureHit& hit);
+
+// Local feature number of a hit, for a later local search around it.
+inline int local_feature(const Blocks& blocks, uint32_t b, uint8_t kind, uint32_t feature) {
+  return 2 * static_cast<int>(feature - blocks.vert_begin[b]) + (kind == 0 ? 1 : 0);
+}
+
+}  // namespace tessera

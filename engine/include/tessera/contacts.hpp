@@ -1,0 +1,65 @@
+// Contacts between rounded-corner blocks (chapter 5.2.2), stored as struct-of-arrays.
+//
+// Design. A contact is one convex corner of block `a` (the owner) facing block `b`. The feature
+// of `b` it faces is either the straight part of an edge (corner-to-edge: normal = the edge's
+// outward normal) or the arc of a rounded corner (corner-to-corner: normal along the line of the
+// two arc centres). Each contact keeps its history (shear stress, slip, bond, dilation) while the
+// feature it faces may change from cycle to cycle as the corner slides along `b`.
+//
+// Identity is (a, corner, b); contacts are sorted by unordered block pair and then by identity,
+// so that the contacts of one interface lie together. Each interface shares its length between
+// its touching contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts
+// along the interface as Q1 and Q2; a lone contact takes the chord of its rounded arc across the
+// opposite edge or arc (cases 2 and 3 of 5.2.2).
+//
+// A corner-to-corner touch is kept once: only the owner with the lower block index may face a
+// corner; the higher one faces edges only. Contacts are found within a tolerance before the
+// blocks touch, created and deleted only in detection passes, which run when some block has
+// moved half the tolerance since the last pass (a Verlet list), so a touch can never be missed.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+
+enum ContactKind : uint8_t { kCornerEdge = 0, kCornerCorner = 1, kLost = 2 };
+enum ContactFlag : uint8_t {
+  kBonded = 1,    // cohesion and tensile strength still intact
+  kSlipping = 2,  // at the Coulomb limit this cycle
+  kTouching = 4,  // overlap or bond: carries force and takes a share of the interface length
+  kBroken = 8,    // was bonded and failed, for output
+};
+
+struct Contacts {
+  // Identity: global vertex `corner` of block `a` against block `b`.
+  std::vector<uint32_t> a, b, corner;
+  // The feature of b faced: kind, and global vertex index (edge from that vertex to the next).
+  std::vector<uint8_t> kind;
+  std::vector<uint32_t> feature;
+  std::vector<uint8_t> flags;
+  std::vector<uint32_t> joint;  // index into the model's joint property table
+  // Geometry of the current cycle: unit normal (from b towards a), contact point, gap (negative
+  // when overlapping), chord of the rounded arc, and the share of interface length.
+  std::vector<Vec2> normal, point;
+  std::vector<double> gap, chord, length;
+  // Joint law state: normal and shear stress on a (compression positive), dilation and total
+  // shear displacement.
+  std::vector<double> sigma_n, tau, dilation, shear_disp;
+  // Force on block a this cycle (block b takes the opposite).
+  std::vector<Vec2> force;
+  // Interface ranges: contacts of pair p are [pair_begin[p], pair_begin[p+1]).
+  std::vector<uint32_t> pair_begin{0};
+
+  size_t size() const { return a.size(); }
+  size_t pair_count() const { return pair_begin.size() - 1; }
+  void clear();
+  // Appends a contact copied from another store (used when merging a detection pass).
+  void push_from(const Contacts& src, size_t i);
+  // Appends a fresh contact with no history.
+  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joint_);
+};
+
+}  // namespace tessera

@@ -1,0 +1,46 @@
+// Histories: quantities sampled every `interval` cycles, written as CSV columns.
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+struct Model;
+
+enum class HistoryQuantity : uint8_t {
+  kXDisp, kYDisp, kXVel, kYVel, kRotation, kAngVel, kXPos, kYPos,  // of one block
+  kRatio, kUnbalanced, kKinetic, kTime, kTimestep                   // of the model
+};
+
+struct HistorySeries {
+  HistoryQuantity quantity = HistoryQuantity::kRatio;
+  int32_t block = -1;  // block index for block quantities
+  std::string label;   // CSV column heading
+};
+
+struct Histories {
+  uint32_t interval = 10;
+  std::vector<HistorySeries> series;
+  std::vector<uint64_t> cycles;  // cycle of each sample
+  std::vector<double> values;    // row-major: one row per sample, one column per series
+  size_t columns() const { return series.size(); }
+  size_t rows() const { return cycles.size(); }
+  double at(size_t row, size_t col) const { return values[row * series.size() + col]; }
+  // Column index of a label, or -1.
+  int find(const std::string& label) const;
+};
+
+// Quantity by script keyword, true if known; `block_quantity` says whether it needs a block.
+bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity);
+const char* history_quantity_name(HistoryQuantity q);
+// Current value of one series.
+double history_value(const Model& m, const HistorySeries& s);
+// Samples all series if the model's cycle is on the interval (or always when forced).
+void sample_histories(Model& m, bool force = false);
+// CSV with a header row: cycle, then one column per series.
+void write_histories_csv(const Histories& h, std::ostream& out);
+
+}  // namespace tessera

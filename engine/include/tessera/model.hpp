@@ -1,0 +1,81 @@
+// The whole state of a 2D rigid-block model: blocks, contacts, properties, settings, clock.
+//
+// Everything needed to continue a run bit for bit lives here and is written by save(); the
+// cycle (solver.hpp) is a set of free functions over this state.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/blocks.hpp"
+#include "tessera/contacts.hpp"
+#include "tessera/history.hpp"
+#include "tessera/joint_law.hpp"
+
+namespace tessera {
+
+struct Material {
+  std::string name;
+  double density = 0.0;  // kg/m^3
+};
+
+enum class DampingMode : uint8_t { kLocal = 0, kAdaptiveGlobal = 1, kNone = 2 };
+
+struct Settings {
+  Vec2 gravity = Vec2::Zero();
+  double rounding = 0.0;           // corner rounding length d
+  double contact_tolerance = 0.0;  // contacts are tracked within this gap; 0: the rounding length
+  DampingMode damping = DampingMode::kLocal;
+  double local_alpha = 0.8;
+  double global_ratio = 0.5;  // adaptive global damping: share of kinetic energy change removed
+  double dt_safety = 0.5;     // time step = safety * 2 min sqrt(m/k)
+  double dt_fixed = 0.0;      // a user's time step (0: automatic)
+};
+
+// Joint property set used for contacts between two groups (-1 matches any group).
+struct JointAssignment {
+  int group_a = -1, group_b = -1;
+  uint32_t joint = 0;
+};
+
+struct Model {
+  Settings settings;
+  Blocks blocks;
+  Contacts contacts;
+  std::vector<Material> materials;
+  std::vector<JointProperties> joints;
+  std::vector<JointAssignment> joint_table;  // later entries win
+  std::vector<std::string> groups;
+  Histories histories;
+
+  // Clock.
+  uint64_t cycle = 0;
+  double time = 0.0, dt = 0.0;
+  bool dt_dirty = true;
+  // Adaptive global damping coefficient (1/s).
+  double global_c = 0.0;
+  // Last cycle's convergence measures.
+  double max_unbalanced = 0.0, mean_applied = 0.0, ratio = 1.0;
+  // Block positions at the last detection pass (Verlet list), and whether one is due.
+  std::vector<double> det_x, det_y, det_theta;
+  bool detection_due = true;
+  uint64_t detection_passes = 0;
+
+  // Derived, rebuilt after detection and after restore: contacts touching each block,
+  // as (contact index * 2 + side) with side 0 for a, 1 for b.
+  std::vector<uint32_t> block_contact_begin, block_contacts;
+
+  // Group index by name; creates it when asked.
+  int group_index(const std::string& name, bool create);
+  int material_index(const std::string& name) const;
+  int joint_index(const std::string& name) const;
+  // Joint property set for a contact between two blocks, or -1 when none applies.
+  int joint_for(uint32_t a, uint32_t b) const;
+  // Contact tolerance in force: the user's, or the rounding length.
+  double tolerance() const;
+  // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
+  void touch() { dt_dirty = true, detection_due = true; }
+};
+
+}  // namespace tessera

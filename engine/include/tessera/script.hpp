@@ -1,0 +1,140 @@
+// The model-script interpreter: one command a line, in the spirit of UDEC's data files.
+//
+// Every command is documented in docs/commands.md. Errors are reported as "file:line: message"
+// naming the word at fault; the batch runner exits non-zero on the first one.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tessera/model.hpp"
+#include "tessera/solver.hpp"
+#include "tessera/vtk_output.hpp"
+
+namespace tessera {
+
+class ScriptError : public std::runtime_error {
+ public:
+  ScriptError(const std::string& file, int line, const std::string& message)
+      : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
+        file_(file), line_(line), message_(message) {}
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string message_;
+};
+
+// " (did you mean 'x'?)" for the closest option, or empty.
+std::string suggest(const std::string& word, const std::vector<std::string>& options);
+
+// What a batch run did, for the summary file.
+struct RunSummary {
+  uint64_t cycles_run = 0;
+  double wall_seconds = 0.0;  // time spent cycling
+  std::vector<std::string> warnings;
+};
+
+// One command line split into words; key=value words become keys.
+struct Args {
+  std::string command;
+  std::vector<std::string> words;
+  std::vector<std::pair<std::string, std::string>> keys;
+  std::vector<bool> used;
+};
+
+class Interpreter {
+ public:
+  using Log = std::function<void(const std::string&)>;
+  // out_dir: where output files go; log: receives progress and print lines.
+  explicit Interpreter(std::string out_dir, Log log = {});
+
+  // Runs a script file; throws ScriptError on the first error.
+  void run_file(const std::string& path);
+  // Runs one line of script text as if it stood at file:line.
+  void execute(const std::string& text, const std::string& file = "<input>", int line = 1);
+  // Writes the histories CSV, a final VTK snapshot and the run summary into the output folder.
+  void finish();
+
+  Model& model() { return model_; }
+  const Model& model() const { return model_; }
+  const RunSummary& summary() const { return summary_; }
+  const std::string& out_dir() const { return out_dir_; }
+  // Value of a script variable; throws std::out_of_range if unknown.
+  double variable(const std::string& name) const { return vars_.at(name); }
+  // A flag another thread may set to stop a running step or solve.
+  void set_stop_flag(std::atomic<bool>* flag) { stop_ = flag; }
+  // Seconds between progress lines during a run (0: none).
+  void set_progress_interval(double seconds) { progress_seconds_ = seconds; }
+
+ private:
+  using Handler = void (Interpreter::*)(Args&);
+  static const std::map<std::string, Handler>& handlers();
+
+  // Command handlers (commands.cpp, run_commands.cpp).
+  void cmd_title(Args&);
+  void cmd_set(Args&);
+  void cmd_print(Args&);
+  void cmd_round(Args&);
+  void cmd_tolerance(Args&);
+  void cmd_threads(Args&);
+  void cmd_material(Args&);
+  void cmd_joint(Args&);
+  void cmd_block(Args&);
+  void cmd_group(Args&);
+  void cmd_fix(Args&);
+  void cmd_free(Args&);
+  void cmd_velocity(Args&);
+  void cmd_gravity(Args&);
+  void cmd_damping(Args&);
+  void cmd_timestep(Args&);
+  void cmd_step(Args&);
+  void cmd_solve(Args&);
+  void cmd_history(Args&);
+  void cmd_vtk(Args&);
+  void cmd_save(Args&);
+  void cmd_restore(Args&);
+  void cmd_call(Args&);
+
+  // Argument helpers (script.cpp).
+  [[noreturn]] void fail(const std::string& message) const;
+  double num(const std::string& text) const;
+  Vec2 point(const std::string& text) const;
+  int64_t integer(const std::string& text, int64_t min) const;
+  bool take(Args& a, const std::string& key, std::string& value) const;
+  bool take_num(Args& a, const std::string& key, double& value) const;
+  void done(Args& a) const;  // fails on keys no handler used
+  std::vector<size_t> select(Args& a, bool allow_words = false);
+  std::string resolve(const std::string& path, bool for_reading) const;
+  void run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what);
+  void check_ready();
+  void log(const std::string& s) const;
+
+  Model model_;
+  std::map<std::string, double> vars_;
+  std::string out_dir_;
+  Log log_;
+  std::unique_ptr<VtkSeries> vtk_;
+  uint64_t vtk_interval_ = 0;
+  std::string title_;
+  std::vector<std::string> dir_stack_{"."};
+  std::string file_ = "<input>";
+  int line_ = 0;
+  int call_depth_ = 0;
+  bool overlap_checked_ = false;
+  std::atomic<bool>* stop_ = nullptr;
+  double progress_seconds_ = 2.0;
+  RunSummary summary_;
+  friend struct ScriptAccess;
+};
+
+}  // namespace tessera

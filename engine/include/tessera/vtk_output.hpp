@@ -1,0 +1,32 @@
+// ParaView output: VTK XML PolyData files (.vtp) per snapshot, gathered by .pvd collections.
+//
+// Written as plain XML text by hand: the engine does not link VTK.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+class VtkSeries {
+ public:
+  // Files go to `dir` (created if missing): blocks.pvd, contacts.pvd and one .vtp of each per
+  // snapshot.
+  explicit VtkSeries(std::string dir);
+  // Writes a snapshot of the model; throws std::runtime_error naming the file on failure.
+  void write(const Model& m);
+  size_t frames() const { return times_.size(); }
+  const std::string& dir() const { return dir_; }
+
+ private:
+  void write_collection(const std::string& name) const;
+  std::string dir_;
+  std::vector<double> times_;
+};
+
+// Contact state code used in the output: 0 open, 1 elastic, 2 slipping, 3 bonded.
+int contact_state_code(uint8_t flags);
+
+}  // namespace tessera

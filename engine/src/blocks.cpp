@@ -1,0 +1,79 @@
+#include "tessera/blocks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tessera {
+
+size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density, int group_id,
+                   int material_id) {
+  const PolygonProperties props = polygon_properties(pts);
+  const std::vector<RoundedCorner> corners = round_corners(pts, rounding);
+  const size_t b = size();
+  x.push_back(props.centroid.x());
+  y.push_back(props.centroid.y());
+  theta.push_back(0.0);
+  for (auto* v : {&vx, &vy, &omega, &fx, &fy, &moment, &applied, &fixed_vx, &fixed_vy,
+                  &fixed_omega})
+    v->push_back(0.0);
+  x_ref.push_back(props.centroid.x());
+  y_ref.push_back(props.centroid.y());
+  area.push_back(props.area);
+  double perim = 0.0, bound = 0.0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    perim += (pts[(i + 1) % pts.size()] - pts[i]).norm();
+    bound = std::max(bound, (pts[i] - props.centroid).norm());
+    local_vertex.push_back(pts[i] - props.centroid);
+    local_arc_centre.push_back(corners[i].centre - props.centroid);
+    arc_radius.push_back(corners[i].radius);
+    round_length.push_back(corners[i].length);
+    convex.push_back(corners[i].convex ? 1 : 0);
+    world_vertex.push_back(pts[i]);
+    world_arc_centre.push_back(corners[i].centre);
+  }
+  vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
+  perimeter.push_back(perim);
+  bound_radius.push_back(bound);
+  mass.push_back(0.0);
+  inertia.push_back(0.0);
+  inv_mass.push_back(0.0);
+  inv_inertia.push_back(0.0);
+  fixity.push_back(kFree);
+  group.push_back(group_id);
+  material.push_back(material_id);
+  id.push_back(static_cast<int>(b) + 1);
+  set_density(b, density);
+  return b;
+}
+
+void Blocks::set_density(size_t b, double density) {
+  // Polar moment per unit area about the centroid, recovered from the local vertices.
+  std::vector<Vec2> pts(local_vertex.begin() + vert_begin[b],
+                        local_vertex.begin() + vert_begin[b + 1]);
+  const PolygonProperties props = polygon_properties(pts);
+  mass[b] = density * props.area;
+  inertia[b] = density * props.polar_moment;
+  refresh_inverse_mass(b);
+}
+
+void Blocks::refresh_inverse_mass(size_t b) {
+  inv_mass[b] = mass[b] > 0.0 ? 1.0 / mass[b] : 0.0;
+  inv_inertia[b] = inertia[b] > 0.0 ? 1.0 / inertia[b] : 0.0;
+}
+
+void Blocks::update_world(size_t b) {
+  const double c = std::cos(theta[b]), s = std::sin(theta[b]);
+  const double bx = x[b], by = y[b];
+  for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v) {
+    const Vec2& p = local_vertex[v];
+    const Vec2& a = local_arc_centre[v];
+    world_vertex[v] = Vec2(bx + c * p.x() - s * p.y(), by + s * p.x() + c * p.y());
+    world_arc_centre[v] = Vec2(bx + c * a.x() - s * a.y(), by + s * a.x() + c * a.y());
+  }
+}
+
+std::vector<Vec2> Blocks::world_polygon(size_t b) const {
+  return {world_vertex.begin() + vert_begin[b], world_vertex.begin() + vert_begin[b + 1]};
+}
+
+}  // namespace tessera

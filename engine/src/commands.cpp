@@ -1,0 +1,328 @@
+// Script commands that build a model: geometry, groups, properties, conditions, settings.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "tessera/expr.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/script.hpp"
+
+namespace tessera {
+
+const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
+  static const std::map<std::string, Handler> h{
+      {"title", &Interpreter::cmd_title},       {"set", &Interpreter::cmd_set},
+      {"print", &Interpreter::cmd_print},       {"round", &Interpreter::cmd_round},
+      {"tolerance", &Interpreter::cmd_tolerance}, {"threads", &Interpreter::cmd_threads},
+      {"material", &Interpreter::cmd_material}, {"joint", &Interpreter::cmd_joint},
+      {"block", &Interpreter::cmd_block},       {"group", &Interpreter::cmd_group},
+      {"fix", &Interpreter::cmd_fix},           {"free", &Interpreter::cmd_free},
+      {"velocity", &Interpreter::cmd_velocity}, {"gravity", &Interpreter::cmd_gravity},
+      {"damping", &Interpreter::cmd_damping},   {"timestep", &Interpreter::cmd_timestep},
+      {"step", &Interpreter::cmd_step},         {"solve", &Interpreter::cmd_solve},
+      {"history", &Interpreter::cmd_history},   {"vtk", &Interpreter::cmd_vtk},
+      {"save", &Interpreter::cmd_save},         {"restore", &Interpreter::cmd_restore},
+      {"call", &Interpreter::cmd_call},
+  };
+  return h;
+}
+
+void Interpreter::cmd_title(Args& a) {
+  std::string t;
+  for (const auto& w : a.words) t += (t.empty() ? "" : " ") + w;
+  title_ = t;
+  if (!title_.empty() && title_.front() == '"' && title_.back() == '"' && title_.size() > 1)
+    title_ = title_.substr(1, title_.size() - 2);
+}
+
+void Interpreter::cmd_set(Args& a) {
+  if (a.words.size() < 3 || a.words[1] != "=")
+    fail("write 'set NAME = EXPRESSION' (with spaces around '=')");
+  const std::string& name = a.words[0];
+  if (!std::isalpha(static_cast<unsigned char>(name[0])) ||
+      !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
+    fail("'" + name + "' is not a variable name (letters, digits and _, starting with a letter)");
+  std::string expr;
+  for (size_t i = 2; i < a.words.size(); ++i) expr += a.words[i] + " ";
+  vars_[name] = num(expr);
+}
+
+void Interpreter::cmd_print(Args& a) {
+  std::string out;
+  for (const auto& w : a.words) {
+    if (w.size() >= 2 && w.front() == '"' && w.back() == '"') {
+      out += w.substr(1, w.size() - 2);
+    } else {
+      std::ostringstream s;
+      s.precision(10);
+      s << num(w);
+      out += s.str();
+    }
+    out += ' ';
+  }
+  for (const auto& [k, v] : a.keys) {
+    std::ostringstream s;
+    s.precision(10);
+    s << k << " = " << num(v) << ' ';
+    out += s.str();
+  }
+  a.used.assign(a.keys.size(), true);
+  log(out);
+}
+
+void Interpreter::cmd_round(Args& a) {
+  if (a.words.size() != 1) fail("write 'round D' with the rounding length D");
+  const double d = num(a.words[0]);
+  if (d <= 0.0) fail("the rounding length must be positive");
+  if (!model_.blocks.size()) {
+    model_.settings.rounding = d;
+    return;
+  }
+  fail("set 'round' before the first block: corners are rounded when a block is made");
+}
+
+void Interpreter::cmd_tolerance(Args& a) {
+  if (a.words.size() != 1) fail("write 'tolerance T' with the contact tolerance T");
+  const double t = num(a.words[0]);
+  if (t <= 0.0) fail("the contact tolerance must be positive");
+  model_.settings.contact_tolerance = t;
+  model_.touch();
+}
+
+void Interpreter::cmd_threads(Args& a) {
+  if (a.words.size() != 1) fail("write 'threads N'");
+  set_thread_count(static_cast<int>(integer(a.words[0], 1)));
+}
+
+void Interpreter::cmd_material(Args& a) {
+  if (a.words.size() < 2) fail("write 'material define NAME density=RHO' or 'material assign NAME <blocks>'");
+  const std::string verb = a.words[0], name = a.words[1];
+  a.words.erase(a.words.begin(), a.words.begin() + 2);
+  if (verb == "define") {
+    double rho = 0.0;
+    if (!take_num(a, "density", rho)) fail("material '" + name + "' needs density=");
+    if (rho <= 0.0) fail("the density of material '" + name + "' must be positive");
+    done(a);
+    int k = model_.material_index(name);
+    if (k < 0) model_.materials.push_back({name, rho}), k = static_cast<int>(model_.materials.size()) - 1;
+    model_.materials[static_cast<size_t>(k)].density = rho;
+    for (size_t b = 0; b < model_.blocks.size(); ++b)
+      if (model_.blocks.material[b] == k) model_.blocks.set_density(b, rho);
+    model_.touch();
+  } else if (verb == "assign") {
+    const int k = model_.material_index(name);
+    if (k < 0) {
+      std::vector<std::string> names;
+      for (const auto& m : model_.materials) names.push_back(m.name);
+      fail("there is no material '" + name + "'" + suggest(name, names));
+    }
+    const auto sel = select(a);
+    done(a);
+    for (size_t b : sel) {
+      model_.blocks.material[b] = k;
+      model_.blocks.set_density(b, model_.materials[static_cast<size_t>(k)].density);
+    }
+    model_.touch();
+  } else {
+    fail("'" + verb + "' is not a verb of 'material' (define or assign)");
+  }
+}
+
+void Interpreter::cmd_joint(Args& a) {
+  if (a.words.size() < 2) fail("write 'joint define NAME kn=.. ks=.. friction=..' or 'joint assign NAME'");
+  const std::string verb = a.words[0], name = a.words[1];
+  if (a.words.size() > 2) fail("unexpected word '" + a.words[2] + "'");
+  if (verb == "define") {
+    JointProperties j;
+    j.name = name;
+    const int existing = model_.joint_index(name);
+    if (existing >= 0) j = model_.joints[static_cast<size_t>(existing)];
+    const bool fresh = existing < 0;
+    auto need = [&](const char* key, double& v) {
+      if (!take_num(a, key, v) && fresh) fail("joint '" + name + "' needs " + key + "=");
+    };
+    need("kn", j.kn);
+    need("ks", j.ks);
+    need("friction", j.friction);
+    take_num(a, "cohesion", j.cohesion);
+    take_num(a, "tension", j.tension);
+    take_num(a, "dilation", j.dilation);
+    take_num(a, "dilation_limit", j.dilation_limit);
+    take(a, "law", j.law);
+    done(a);
+    if (j.kn <= 0.0 || j.ks <= 0.0) fail("joint '" + name + "': kn and ks must be positive");
+    if (j.friction < 0.0 || j.friction >= 90.0) fail("joint '" + name + "': friction must be in [0, 90) degrees");
+    if (j.dilation < 0.0 || j.dilation >= 90.0) fail("joint '" + name + "': dilation must be in [0, 90) degrees");
+    if (j.cohesion < 0.0 || j.tension < 0.0 || j.dilation_limit < 0.0)
+      fail("joint '" + name + "': cohesion, tension and dilation_limit cannot be negative");
+    if (!find_joint_law(j.law)) fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
+    j.finalize();
+    if (fresh) model_.joints.push_back(j);
+    else model_.joints[static_cast<size_t>(existing)] = j;
+    model_.dt_dirty = true;
+  } else if (verb == "assign") {
+    const int k = model_.joint_index(name);
+    if (k < 0) {
+      std::vector<std::string> names;
+      for (const auto& j : model_.joints) names.push_back(j.name);
+      fail("there is no joint '" + name + "' (define it first with 'joint define')" + suggest(name, names));
+    }
+    JointAssignment ja;
+    ja.joint = static_cast<uint32_t>(k);
+    std::string groups;
+    if (take(a, "groups", groups)) {
+      const auto g = split_top_level(groups);
+      if (g.size() != 2) fail("write groups=A,B with two group names");
+      ja.group_a = model_.group_index(g[0], false);
+      ja.group_b = model_.group_index(g[1], false);
+      for (int i = 0; i < 2; ++i)
+        if ((i ? ja.group_b : ja.group_a) < 0)
+          fail("there is no group '" + g[static_cast<size_t>(i)] + "'" + suggest(g[static_cast<size_t>(i)], model_.groups));
+    }
+    done(a);
+    model_.joint_table.push_back(ja);
+    // Existing contacts take the new properties at once.
+    for (size_t i = 0; i < model_.contacts.size(); ++i) {
+      const int j = model_.joint_for(model_.contacts.a[i], model_.contacts.b[i]);
+      if (j >= 0) model_.contacts.joint[i] = static_cast<uint32_t>(j);
+    }
+    model_.touch();
+  } else {
+    fail("'" + verb + "' is not a verb of 'joint' (define or assign)");
+  }
+}
+
+void Interpreter::cmd_block(Args& a) {
+  if (model_.settings.rounding <= 0.0) fail("set the rounding length with 'round D' before the first block");
+  std::vector<Vec2> pts;
+  for (const auto& w : a.words) pts.push_back(point(w));
+  const std::string which = "block " + std::to_string(model_.blocks.size() + 1);
+  if (const std::string why = polygon_problem(pts); !why.empty()) fail(which + ": " + why);
+  if (signed_area(pts) < 0.0) std::reverse(pts.begin(), pts.end());
+  std::string g, mat;
+  int group = -1, material = -1;
+  if (take(a, "group", g)) group = model_.group_index(g, true);
+  if (take(a, "material", mat)) {
+    material = model_.material_index(mat);
+    if (material < 0) {
+      std::vector<std::string> names;
+      for (const auto& m : model_.materials) names.push_back(m.name);
+      fail(which + ": there is no material '" + mat + "' (define it first)" + suggest(mat, names));
+    }
+  }
+  done(a);
+  const double rho = material >= 0 ? model_.materials[static_cast<size_t>(material)].density : 0.0;
+  model_.blocks.add(pts, model_.settings.rounding, rho, group, material);
+  model_.touch();
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_group(Args& a) {
+  if (a.words.empty()) fail("write 'group NAME <blocks>'");
+  const std::string name = a.words[0];
+  a.words.erase(a.words.begin());
+  const auto sel = select(a);
+  done(a);
+  const int g = model_.group_index(name, true);
+  for (size_t b : sel) model_.blocks.group[b] = g;
+  model_.touch();
+}
+
+namespace {
+// Fixity bits named by the words x, y, rotation (all three when none is named).
+uint8_t fixity_words(std::vector<std::string>& words, const std::function<void(const std::string&)>& fail) {
+  uint8_t bits = 0;
+  for (const auto& w : words) {
+    if (w == "x") bits |= kFixX;
+    else if (w == "y") bits |= kFixY;
+    else if (w == "rotation") bits |= kFixRot;
+    else fail("'" + w + "' is not a degree of freedom (x, y or rotation)");
+  }
+  return bits ? bits : static_cast<uint8_t>(kFixAll);
+}
+}  // namespace
+
+void Interpreter::cmd_fix(Args& a) {
+  const auto sel = select(a, true);
+  done(a);
+  const uint8_t bits = fixity_words(a.words, [this](const std::string& s) { fail(s); });
+  for (size_t b : sel) {
+    model_.blocks.fixity[b] |= bits;
+    // A degree of freedom is held at the velocity it has now unless 'velocity' says otherwise.
+    if (bits & kFixX) model_.blocks.fixed_vx[b] = model_.blocks.vx[b];
+    if (bits & kFixY) model_.blocks.fixed_vy[b] = model_.blocks.vy[b];
+    if (bits & kFixRot) model_.blocks.fixed_omega[b] = model_.blocks.omega[b];
+  }
+  model_.touch();
+}
+
+void Interpreter::cmd_free(Args& a) {
+  const auto sel = select(a, true);
+  done(a);
+  const uint8_t bits = fixity_words(a.words, [this](const std::string& s) { fail(s); });
+  for (size_t b : sel) model_.blocks.fixity[b] &= static_cast<uint8_t>(~bits);
+  model_.touch();
+}
+
+void Interpreter::cmd_velocity(Args& a) {
+  const auto sel = select(a);
+  double vx = 0, vy = 0, om = 0;
+  const bool hx = take_num(a, "vx", vx), hy = take_num(a, "vy", vy), hw = take_num(a, "omega", om);
+  done(a);
+  if (!hx && !hy && !hw) fail("'velocity' needs vx=, vy= or omega=");
+  Blocks& B = model_.blocks;
+  for (size_t b : sel) {
+    if (hx) B.vx[b] = vx, B.fixed_vx[b] = vx;
+    if (hy) B.vy[b] = vy, B.fixed_vy[b] = vy;
+    if (hw) B.omega[b] = om, B.fixed_omega[b] = om;
+  }
+}
+
+void Interpreter::cmd_gravity(Args& a) {
+  if (a.words.size() != 2) fail("write 'gravity GX GY' (m/s^2), e.g. 'gravity 0 -9.81'");
+  model_.settings.gravity = Vec2(num(a.words[0]), num(a.words[1]));
+}
+
+void Interpreter::cmd_damping(Args& a) {
+  if (a.words.empty()) fail("write 'damping local [ALPHA]', 'damping global [RATIO]' or 'damping none'");
+  Settings& s = model_.settings;
+  const std::string& mode = a.words[0];
+  if (a.words.size() > 2) fail("unexpected word '" + a.words[2] + "'");
+  const bool has = a.words.size() == 2;
+  if (mode == "local") {
+    s.damping = DampingMode::kLocal;
+    if (has) s.local_alpha = num(a.words[1]);
+    if (s.local_alpha < 0.0 || s.local_alpha >= 1.0) fail("local damping alpha must be in [0, 1)");
+  } else if (mode == "global") {
+    s.damping = DampingMode::kAdaptiveGlobal;
+    if (has) s.global_ratio = num(a.words[1]);
+    if (s.global_ratio <= 0.0 || s.global_ratio >= 1.0) fail("the global damping ratio must be in (0, 1)");
+  } else if (mode == "none") {
+    if (has) fail("'damping none' takes no value");
+    s.damping = DampingMode::kNone;
+  } else {
+    fail("'" + mode + "' is not a damping mode" + suggest(mode, {"local", "global", "none"}));
+  }
+}
+
+void Interpreter::cmd_timestep(Args& a) {
+  if (a.words.empty()) fail("write 'timestep auto [safety=S]' or 'timestep fixed DT'");
+  Settings& s = model_.settings;
+  if (a.words[0] == "auto") {
+    if (a.words.size() > 1) fail("unexpected word '" + a.words[1] + "'");
+    take_num(a, "safety", s.dt_safety);
+    done(a);
+    if (s.dt_safety <= 0.0 || s.dt_safety > 1.0) fail("the time step safety factor must be in (0, 1]");
+    s.dt_fixed = 0.0;
+  } else if (a.words[0] == "fixed") {
+    if (a.words.size() != 2) fail("write 'timestep fixed DT'");
+    done(a);
+    s.dt_fixed = num(a.words[1]);
+    if (s.dt_fixed <= 0.0) fail("the time step must be positive");
+  } else {
+    fail("'" + a.words[0] + "' is not a time step mode (auto or fixed)");
+  }
+  model_.dt_dirty = true;
+}
+
+}  // namespace tessera

@@ -1,0 +1,30 @@
+#include "tessera/contacts.hpp"
+
+namespace tessera {
+
+void Contacts::clear() {
+  a.clear(), b.clear(), corner.clear(), kind.clear(), feature.clear(), flags.clear();
+  joint.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(), length.clear();
+  sigma_n.clear(), tau.clear(), dilation.clear(), shear_disp.clear(), force.clear();
+  pair_begin.assign(1, 0);
+}
+
+void Contacts::push_from(const Contacts& s, size_t i) {
+  a.push_back(s.a[i]), b.push_back(s.b[i]), corner.push_back(s.corner[i]);
+  kind.push_back(s.kind[i]), feature.push_back(s.feature[i]), flags.push_back(s.flags[i]);
+  joint.push_back(s.joint[i]), normal.push_back(s.normal[i]), point.push_back(s.point[i]);
+  gap.push_back(s.gap[i]), chord.push_back(s.chord[i]), length.push_back(s.length[i]);
+  sigma_n.push_back(s.sigma_n[i]), tau.push_back(s.tau[i]), dilation.push_back(s.dilation[i]);
+  shear_disp.push_back(s.shear_disp[i]), force.push_back(s.force[i]);
+}
+
+void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joint_) {
+  a.push_back(a_), b.push_back(b_), corner.push_back(corner_);
+  kind.push_back(kLost), feature.push_back(0), flags.push_back(0), joint.push_back(joint_);
+  normal.push_back(Vec2::Zero()), point.push_back(Vec2::Zero());
+  gap.push_back(0.0), chord.push_back(0.0), length.push_back(0.0);
+  sigma_n.push_back(0.0), tau.push_back(0.0), dilation.push_back(0.0), shear_disp.push_back(0.0);
+  force.push_back(Vec2::Zero());
+}
+
+}  // namespace tessera

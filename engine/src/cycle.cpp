@@ -1,0 +1,322 @@
+// One cycle, top to bottom: detection when due, contact geometry and joint law, interface
+// lengths and forces, then block resultants, damping and integration.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "tessera/contact_geometry.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Times one stage into the profile, if any.
+class StageTimer {
+ public:
+  explicit StageTimer(int stage) : stage_(stage), t0_(Clock::now()) {}
+  ~StageTimer() {
+    if (Profile* p = run_options().profile)
+      p->seconds[static_cast<size_t>(stage_)] +=
+          std::chrono::duration<double>(Clock::now() - t0_).count();
+  }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  int stage_;
+  Clock::time_point t0_;
+};
+
+// Velocity of a block's material point p.
+inline Vec2 point_velocity(const Blocks& B, uint32_t b, const Vec2& p) {
+  return {B.vx[b] - B.omega[b] * (p.y() - B.y[b]), B.vy[b] + B.omega[b] * (p.x() - B.x[b])};
+}
+
+// Contact geometry from the current positions, then the joint law (one contact at a time).
+void update_contacts(Model& m) {
+  const Blocks& B = m.blocks;
+  Contacts& C = m.contacts;
+  const double dt = m.dt;
+  parallel_for(C.size(), [&](size_t i0, size_t i1) {
+    for (size_t i = i0; i < i1; ++i) {
+      const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
+      FeatureHit hit;
+      const bool corners = a < b;
+      const bool lost = C.kind[i] == kLost;
+      const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
+      const int count = lost ? 2 * static_cast<int>(B.vertex_count(b)) : 5;
+      const Vec2& c = B.world_arc_centre[v];
+      if (!nearest_feature(B, b, c, B.arc_radius[v], corners, first, count, hit)) {
+        C.kind[i] = kLost;
+        C.gap[i] = std::numeric_limits<double>::infinity();
+        C.chord[i] = 0.0;
+        C.sigma_n[i] = 0.0, C.tau[i] = 0.0;
+        C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
+        continue;
+      }
+      C.kind[i] = hit.kind, C.feature[i] = hit.feature, C.gap[i] = hit.gap;
+      C.normal[i] = hit.normal, C.point[i] = hit.point, C.chord[i] = hit.chord;
+      // Shear displacement increment of a relative to b over the last step.
+      const Vec2 t = perp(hit.normal);
+      const double dus = (point_velocity(B, a, hit.point) - point_velocity(B, b, hit.point)).dot(t) * dt;
+      JointState s{C.sigma_n[i], C.tau[i], C.dilation[i], C.shear_disp[i], C.flags[i]};
+      const JointProperties& jp = m.joints[C.joint[i]];
+      jp.impl->update(jp, -hit.gap, dus, s);
+      C.sigma_n[i] = s.sigma_n, C.tau[i] = s.tau, C.dilation[i] = s.dilation;
+      C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
+    }
+  });
+}
+
+// Shares each interface's length among its touching contacts (L = RQ1/2 + RQ2/2, the
+// neighbours along the interface as Q1, Q2; never less than the contact's own chord), and
+// turns stresses into forces.
+void update_interfaces(Model& m) {
+  Contacts& C = m.contacts;
+  parallel_for(C.pair_count(), [&](size_t p0, size_t p1) {
+    std::vector<std::pair<double, uint32_t>> along;
+    for (size_t p = p0; p < p1; ++p) {
+      const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
+      along.clear();
+      Vec2 t = Vec2::Zero();
+      for (uint32_t i = c0; i < c1; ++i) {
+        C.length[i] = 0.0;
+        C.force[i] = Vec2::Zero();
+        if (!(C.flags[i] & kTouching)) continue;
+        if (along.empty()) t = perp(C.normal[i]);
+        along.emplace_back(C.point[i].dot(t), i);
+      }
+      if (along.empty()) continue;
+      std::sort(along.begin(), along.end());
+      const size_t k = along.size();
+      for (size_t j = 0; j < k; ++j) {
+        const uint32_t i = along[j].second;
+        double len = 0.0;
+        if (j > 0) len += 0.5 * (along[j].first - along[j - 1].first);
+        if (j + 1 < k) len += 0.5 * (along[j + 1].first - along[j].first);
+        len = std::max(len, C.chord[i]);
+        C.length[i] = len;
+        C.force[i] = len * (C.sigma_n[i] * C.normal[i] + C.tau[i] * perp(C.normal[i]));
+      }
+    }
+  }, 64);
+}
+
+// Sign of a velocity component for local damping (zero at rest).
+inline double sgn(double v) { return (v > 0.0) - (v < 0.0); }
+
+// Resultants, damping and central-difference integration of every block.
+void move_blocks(Model& m) {
+  Blocks& B = m.blocks;
+  const Contacts& C = m.contacts;
+  const Settings& S = m.settings;
+  const double dt = m.dt;
+  const size_t n = B.size();
+  const double tol = m.tolerance();
+  std::vector<double> unbalanced(n, 0.0), drift(n, 0.0);
+  // Resultants: gravity plus contact forces, gathered in a fixed order per block.
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      double fx = B.mass[b] * S.gravity.x(), fy = B.mass[b] * S.gravity.y(), mz = 0.0;
+      double applied = B.mass[b] * S.gravity.norm();
+      for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
+        const uint32_t i = m.block_contacts[k] >> 1;
+        const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
+        const Vec2 f = sign * C.force[i];
+        fx += f.x(), fy += f.y();
+        mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
+        applied += f.norm();
+      }
+      B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
+    }
+  });
+  // Adaptive global damping: servo the viscosity so that damping absorbs the chosen share of
+  // the power of the unbalanced forces (Cundall 1982), adjusted every 10 cycles.
+  if (S.damping == DampingMode::kAdaptiveGlobal && m.cycle % 10 == 0) {
+    // Power of the unbalanced forces and twice the kinetic energy, over free degrees of freedom.
+    const double power = deterministic_sum(n, [&](size_t b) {
+      const uint8_t fix = B.fixity[b];
+      double p = 0.0;
+      if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) p += std::abs(B.fx[b] * B.vx[b]);
+      if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) p += std::abs(B.fy[b] * B.vy[b]);
+      if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) p += std::abs(B.moment[b] * B.omega[b]);
+      return p;
+    });
+    const double kin2 = deterministic_sum(n, [&](size_t b) {
+      const uint8_t fix = B.fixity[b];
+      double k = 0.0;
+      if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) k += B.mass[b] * B.vx[b] * B.vx[b];
+      if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) k += B.mass[b] * B.vy[b] * B.vy[b];
+      if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) k += B.inertia[b] * B.omega[b] * B.omega[b];
+      return k;
+    });
+    if (kin2 > 0.0) {
+      const double target = S.global_ratio * power / kin2;
+      m.global_c = m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
+    }
+  }
+  const double c_glob = S.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
+  const double alpha = S.damping == DampingMode::kLocal ? S.local_alpha : 0.0;
+  // Damping and integration, one degree of freedom at a time.
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      const uint8_t fix = B.fixity[b];
+      double ub2 = 0.0;
+      auto advance = [&](double f, double& v, double inv_m, double mass, bool fixed, double v_fixed) {
+        if (fixed || inv_m == 0.0) {
+          v = fixed ? v_fixed : 0.0;
+          return;
+        }
+        ub2 += f * f;
+        const double fd = f - alpha * std::abs(f) * sgn(v) - c_glob * mass * v;
+        v += dt * fd * inv_m;
+      };
+      advance(B.fx[b], B.vx[b], B.inv_mass[b], B.mass[b], fix & kFixX, B.fixed_vx[b]);
+      advance(B.fy[b], B.vy[b], B.inv_mass[b], B.mass[b], fix & kFixY, B.fixed_vy[b]);
+      const double ub_force = ub2;
+      advance(B.moment[b], B.omega[b], B.inv_inertia[b], B.inertia[b], fix & kFixRot,
+              B.fixed_omega[b]);
+      unbalanced[b] = std::sqrt(ub_force);
+      B.x[b] += dt * B.vx[b];
+      B.y[b] += dt * B.vy[b];
+      B.theta[b] += dt * B.omega[b];
+      B.update_world(b);
+      // Largest vertex displacement since the last detection pass.
+      const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
+      drift[b] = std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
+    }
+  });
+  // Convergence measures over the blocks that move under load.
+  size_t free_blocks = 0;
+  double max_ub = 0.0, max_drift = 0.0;
+  for (size_t b = 0; b < n; ++b) {
+    max_drift = std::max(max_drift, drift[b]);
+    if (B.inv_mass[b] == 0.0 || (B.fixity[b] & (kFixX | kFixY)) == (kFixX | kFixY)) continue;
+    ++free_blocks;
+    max_ub = std::max(max_ub, unbalanced[b]);
+  }
+  const double sum_applied = deterministic_sum(n, [&](size_t b) {
+    const bool moves = B.inv_mass[b] > 0.0 && (B.fixity[b] & (kFixX | kFixY)) != (kFixX | kFixY);
+    return moves ? B.applied[b] : 0.0;
+  });
+  m.max_unbalanced = max_ub;
+  m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
+  m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
+  if (max_drift > 0.5 * tol) m.detection_due = true;
+  if (!std::isfinite(max_ub) || !std::isfinite(max_drift))
+    throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
+                     ": forces or positions are no longer finite (time step too large for the "
+                     "stiffness, or blocks overlapping badly)");
+}
+
+}  // namespace
+
+const char* stage_name(int stage) {
+  static const char* const names[] = {"detect", "contacts", "interfaces", "motion"};
+  return names[stage];
+}
+
+RunOptions& run_options() {
+  static RunOptions options{TESSERA_VALIDATE_DEFAULT != 0, nullptr};
+  return options;
+}
+
+double compute_timestep(const Model& m) {
+  if (m.settings.dt_fixed > 0.0) return m.settings.dt_fixed;
+  double kmax = 0.0;
+  for (const JointProperties& j : m.joints) kmax = std::max({kmax, j.kn, j.ks});
+  const Blocks& B = m.blocks;
+  double dt = std::numeric_limits<double>::infinity();
+  // Each block: contact length in touch is at most its perimeter, at most bound_radius away.
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (B.fixity[b] == kFixAll || kmax <= 0.0) continue;
+    const double k = kmax * B.perimeter[b];
+    if (B.inv_mass[b] > 0.0) dt = std::min(dt, 2.0 * std::sqrt(B.mass[b] / k));
+    if (B.inv_inertia[b] > 0.0)
+      dt = std::min(dt, 2.0 * std::sqrt(B.inertia[b] / (k * B.bound_radius[b] * B.bound_radius[b])));
+  }
+  if (!std::isfinite(dt)) return 1e-3;
+  return m.settings.dt_safety * dt;
+}
+
+void prepare(Model& m) {
+  if (m.blocks.size() == 0) throw ModelError("the model has no blocks");
+  if (m.joints.empty()) throw ModelError("no joint properties are defined (use 'joint define')");
+  if (m.settings.rounding <= 0.0) throw ModelError("the rounding length is not set (use 'round')");
+  for (size_t b = 0; b < m.blocks.size(); ++b)
+    if (m.blocks.mass[b] <= 0.0 && m.blocks.fixity[b] != kFixAll)
+      throw ModelError("block " + std::to_string(m.blocks.id[b]) +
+                       " has no mass: give it a material with a density");
+  if (m.dt_dirty) {
+    m.dt = compute_timestep(m);
+    m.dt_dirty = false;
+  }
+  if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
+  if (m.block_contact_begin.size() != m.blocks.size() + 1) build_adjacency(m);
+}
+
+void cycle(Model& m) {
+  {
+    StageTimer t(kStageDetect);
+    if (m.detection_due) detect_contacts(m);
+  }
+  {
+    StageTimer t(kStageContacts);
+    update_contacts(m);
+  }
+  {
+    StageTimer t(kStageInterfaces);
+    update_interfaces(m);
+  }
+  {
+    StageTimer t(kStageMotion);
+    move_blocks(m);
+  }
+  if (run_options().validate) validate(m);
+  m.time += m.dt;
+  ++m.cycle;
+  if (Profile* p = run_options().profile) ++p->cycles;
+  sample_histories(m);
+}
+
+double kinetic_energy(const Model& m) {
+  const Blocks& B = m.blocks;
+  return 0.5 * deterministic_sum(B.size(), [&](size_t b) {
+    return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) + B.inertia[b] * B.omega[b] * B.omega[b];
+  });
+}
+
+uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t every) {
+  prepare(m);
+  for (uint64_t i = 0; i < n; ++i) {
+    cycle(m);
+    if (progress && every && (i + 1) % every == 0 && !progress(m)) return i + 1;
+  }
+  return n;
+}
+
+SolveResult solve(Model& m, double ratio, uint64_t max_cycles, const Progress& progress,
+                  uint64_t every) {
+  prepare(m);
+  SolveResult r;
+  while (r.cycles < max_cycles) {
+    cycle(m);
+    ++r.cycles;
+    if (m.ratio <= ratio) {
+      r.converged = true;
+      break;
+    }
+    if (progress && every && r.cycles % every == 0 && !progress(m)) {
+      r.stopped = true;
+      break;
+    }
+  }
+  return r;
+}
+
+}  // namespace tessera

@@ -1,0 +1,235 @@
+// Contact detection pass: cell-grid broad phase on bounding boxes, rounded-corner search for
+// each candidate pair, and a merge that keeps the history of contacts that persist.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
+#include "tessera/contact_geometry.hpp"
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+namespace {
+
+struct Box {
+  double x0, y0, x1, y1;
+};
+
+bool overlap(const Box& a, const Box& b) {
+  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
+
+// Bounding boxes of the blocks, grown by `grow` on every side.
+std::vector<Box> block_boxes(const Blocks& B, double grow) {
+  std::vector<Box> boxes(B.size());
+  for (size_t b = 0; b < B.size(); ++b) {
+    Box x{1e300, 1e300, -1e300, -1e300};
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
+      const Vec2& p = B.world_vertex[v];
+      x.x0 = std::min(x.x0, p.x()), x.y0 = std::min(x.y0, p.y());
+      x.x1 = std::max(x.x1, p.x()), x.y1 = std::max(x.y1, p.y());
+    }
+    boxes[b] = {x.x0 - grow, x.y0 - grow, x.x1 + grow, x.y1 + grow};
+  }
+  return boxes;
+}
+
+// Candidate pairs (lo, hi) whose boxes overlap, sorted. Blocks go into the cells of a uniform
+// grid sized by the median block; a block covering many cells is tested against all others.
+std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& boxes,
+                                                      const std::vector<uint8_t>& fixed) {
+  const size_t n = boxes.size();
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  if (n < 2) return pairs;
+  std::vector<double> sizes(n);
+  for (size_t b = 0; b < n; ++b)
+    sizes[b] = std::max(boxes[b].x1 - boxes[b].x0, boxes[b].y1 - boxes[b].y0);
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<long>(n / 2), sizes.end());
+  const double h = std::max(sizes[n / 2], 1e-12);
+  auto cell = [h](double v) { return static_cast<int64_t>(std::floor(v / h)); };
+  std::vector<std::pair<int64_t, uint32_t>> entries;
+  std::vector<uint32_t> large;
+  entries.reserve(4 * n);
+  for (uint32_t b = 0; b < n; ++b) {
+    const int64_t ix0 = cell(boxes[b].x0), ix1 = cell(boxes[b].x1);
+    const int64_t iy0 = cell(boxes[b].y0), iy1 = cell(boxes[b].y1);
+    if ((ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 16) {
+      large.push_back(b);
+      continue;
+    }
+    for (int64_t ix = ix0; ix <= ix1; ++ix)
+      for (int64_t iy = iy0; iy <= iy1; ++iy)
+        entries.emplace_back((ix << 32) ^ (iy & 0xffffffffLL), b);
+  }
+  std::sort(entries.begin(), entries.end());
+  auto keep = [&](uint32_t a, uint32_t b) {
+    if (fixed[a] && fixed[b]) return;
+    if (overlap(boxes[a], boxes[b])) pairs.emplace_back(std::min(a, b), std::max(a, b));
+  };
+  for (size_t s = 0; s < entries.size();) {
+    size_t e = s;
+    while (e < entries.size() && entries[e].first == entries[s].first) ++e;
+    for (size_t i = s; i < e; ++i)
+      for (size_t j = i + 1; j < e; ++j) {
+        const uint32_t a = entries[i].second, b = entries[j].second;
+        // Report the pair only from the cell holding the corner of the boxes' overlap.
+        const int64_t ox = cell(std::max(boxes[a].x0, boxes[b].x0));
+        const int64_t oy = cell(std::max(boxes[a].y0, boxes[b].y0));
+        if (((ox << 32) ^ (oy & 0xffffffffLL)) != entries[s].first) continue;
+        keep(a, b);
+      }
+    s = e;
+  }
+  for (uint32_t l : large)
+    for (uint32_t b = 0; b < n; ++b) {
+      if (b == l) continue;
+      const bool b_large = std::binary_search(large.begin(), large.end(), b);
+      if (b_large && b < l) continue;
+      keep(l, b);
+    }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+// A contact found in this pass: corner `corner` of `owner` against `other`.
+struct Found {
+  uint32_t lo, hi, owner, corner, other;
+  FeatureHit hit;
+  auto key() const { return std::tie(lo, hi, owner, corner); }
+};
+
+// Corners of `owner` within reach of block `other`.
+void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& other_box,
+                   double reach, std::vector<Found>& out) {
+  const bool corners = owner < other;
+  const int nf = 2 * static_cast<int>(B.vertex_count(other));
+  for (uint32_t v = B.vert_begin[owner]; v < B.vert_begin[owner + 1]; ++v) {
+    if (!B.convex[v]) continue;
+    const Vec2& c = B.world_arc_centre[v];
+    const double r = B.arc_radius[v];
+    if (c.x() + r < other_box.x0 || c.x() - r > other_box.x1 || c.y() + r < other_box.y0 ||
+        c.y() - r > other_box.y1)
+      continue;
+    FeatureHit hit;
+    if (!nearest_feature(B, other, c, r, corners, 0, nf, hit) || hit.gap >= reach) continue;
+    out.push_back({std::min(owner, other), std::max(owner, other), owner, v, other, hit});
+  }
+}
+
+}  // namespace
+
+void detect_contacts(Model& m) {
+  Blocks& B = m.blocks;
+  const double tol = m.tolerance();
+  const size_t n = B.size();
+  for (size_t b = 0; b < n; ++b) B.update_world(b);
+  const std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
+  std::vector<uint8_t> fixed(n);
+  for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll;
+  const auto pairs = broad_phase(boxes, fixed);
+  // Narrow phase, pair by pair in sorted order.
+  std::vector<Found> found;
+  for (const auto& [lo, hi] : pairs) {
+    corner_search(B, lo, hi, boxes[hi], tol, found);
+    corner_search(B, hi, lo, boxes[lo], tol, found);
+  }
+  // Merge with the existing contacts (both sorted by key), keeping history.
+  Contacts& old = m.contacts;
+  Contacts next;
+  size_t j = 0;
+  auto old_key = [&](size_t i) {
+    const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
+    return std::make_tuple(lo, hi, old.a[i], old.corner[i]);
+  };
+  for (const Found& f : found) {
+    const auto key = std::make_tuple(f.lo, f.hi, f.owner, f.corner);
+    while (j < old.size() && old_key(j) < key) ++j;
+    if (j < old.size() && old_key(j) == key) {
+      next.push_from(old, j);
+    } else {
+      const int joint = m.joint_for(f.owner, f.other);
+      if (joint < 0) {
+        const auto group_name = [&](uint32_t b) {
+          return B.group[b] >= 0 ? m.groups[static_cast<size_t>(B.group[b])] : std::string("(none)");
+        };
+        throw ModelError("no joint properties apply to the contact between block " +
+                         std::to_string(B.id[f.owner]) + " (group " + group_name(f.owner) +
+                         ") and block " + std::to_string(B.id[f.other]) + " (group " +
+                         group_name(f.other) + "): use 'joint assign'");
+      }
+      next.push_new(f.owner, f.other, f.corner, static_cast<uint32_t>(joint));
+      const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
+      // Joints present when the model is assembled are bonded (cohesion and tension act).
+      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0)) next.flags.back() |= kBonded;
+    }
+    const size_t i = next.size() - 1;
+    next.kind[i] = f.hit.kind, next.feature[i] = f.hit.feature, next.gap[i] = f.hit.gap;
+    next.normal[i] = f.hit.normal, next.point[i] = f.hit.point, next.chord[i] = f.hit.chord;
+  }
+  // Interface ranges.
+  next.pair_begin.assign(1, 0);
+  for (size_t i = 0; i < next.size(); ++i) {
+    if (i > 0 && (std::min(next.a[i], next.b[i]) != std::min(next.a[i - 1], next.b[i - 1]) ||
+                  std::max(next.a[i], next.b[i]) != std::max(next.a[i - 1], next.b[i - 1])))
+      next.pair_begin.push_back(static_cast<uint32_t>(i));
+  }
+  if (next.size() > 0) next.pair_begin.push_back(static_cast<uint32_t>(next.size()));
+  m.contacts = std::move(next);
+  build_adjacency(m);
+  m.det_x = B.x, m.det_y = B.y, m.det_theta = B.theta;
+  m.detection_due = false;
+  ++m.detection_passes;
+}
+
+void build_adjacency(Model& m) {
+  const Contacts& C = m.contacts;
+  const size_t n = m.blocks.size();
+  std::vector<uint32_t> count(n + 1, 0);
+  for (size_t i = 0; i < C.size(); ++i) ++count[C.a[i] + 1], ++count[C.b[i] + 1];
+  for (size_t b = 0; b < n; ++b) count[b + 1] += count[b];
+  m.block_contact_begin = count;
+  m.block_contacts.assign(count[n], 0);
+  std::vector<uint32_t> fill(count.begin(), count.end() - 1);
+  for (uint32_t i = 0; i < C.size(); ++i) {
+    m.block_contacts[fill[C.a[i]]++] = i * 2;
+    m.block_contacts[fill[C.b[i]]++] = i * 2 + 1;
+  }
+}
+
+std::string find_overlap(const Model& m) {
+  const Blocks& B = m.blocks;
+  const double tol = m.tolerance();
+  const std::vector<Box> boxes = block_boxes(B, 0.0);
+  std::vector<uint8_t> none(B.size(), 0);
+  for (const auto& [lo, hi] : broad_phase(boxes, none)) {
+    const auto pa = B.world_polygon(lo), pb = B.world_polygon(hi);
+    // Any vertex deeper than the tolerance inside the other block, or a centroid inside it.
+    auto deep_inside = [&](const std::vector<Vec2>& pts, const std::vector<Vec2>& poly) {
+      for (const Vec2& p : pts) {
+        if (!point_in_polygon(p, poly)) continue;
+        double depth = 1e300;
+        for (size_t k = 0; k < poly.size(); ++k) {
+          const Vec2 &q0 = poly[k], &q1 = poly[(k + 1) % poly.size()];
+          const Vec2 u = (q1 - q0).normalized();
+          const double t = std::clamp((p - q0).dot(u), 0.0, (q1 - q0).norm());
+          depth = std::min(depth, (p - (q0 + t * u)).norm());
+        }
+        if (depth > tol) return true;
+      }
+      return false;
+    };
+    const bool centroid_in = point_in_polygon(Vec2(B.x[lo], B.y[lo]), pb) ||
+                             point_in_polygon(Vec2(B.x[hi], B.y[hi]), pa);
+    if (centroid_in || deep_inside(pa, pb) || deep_inside(pb, pa)) {
+      std::ostringstream s;
+      s << "blocks " << B.id[lo] << " and " << B.id[hi] << " overlap (near x=" << B.x[lo]
+        << ", y=" << B.y[lo] << ")";
+      return s.str();
+    }
+  }
+  return {};
+}
+
+}  // namespace tessera

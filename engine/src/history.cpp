@@ -1,0 +1,101 @@
+#include "tessera/history.hpp"
+
+#include <array>
+#include <cstdio>
+#include <utility>
+
+#include "tessera/model.hpp"
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+namespace {
+struct QuantityName {
+  HistoryQuantity q;
+  const char* name;
+  bool block;
+};
+constexpr std::array<QuantityName, 13> kNames{{
+    {HistoryQuantity::kXDisp, "xdisp", true},
+    {HistoryQuantity::kYDisp, "ydisp", true},
+    {HistoryQuantity::kXVel, "xvel", true},
+    {HistoryQuantity::kYVel, "yvel", true},
+    {HistoryQuantity::kRotation, "rotation", true},
+    {HistoryQuantity::kAngVel, "angvel", true},
+    {HistoryQuantity::kXPos, "xpos", true},
+    {HistoryQuantity::kYPos, "ypos", true},
+    {HistoryQuantity::kRatio, "ratio", false},
+    {HistoryQuantity::kUnbalanced, "unbalanced", false},
+    {HistoryQuantity::kKinetic, "kinetic", false},
+    {HistoryQuantity::kTime, "time", false},
+    {HistoryQuantity::kTimestep, "timestep", false},
+}};
+}  // namespace
+
+int Histories::find(const std::string& label) const {
+  for (size_t i = 0; i < series.size(); ++i)
+    if (series[i].label == label) return static_cast<int>(i);
+  return -1;
+}
+
+bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity) {
+  for (const auto& n : kNames)
+    if (word == n.name) {
+      q = n.q, block_quantity = n.block;
+      return true;
+    }
+  return false;
+}
+
+const char* history_quantity_name(HistoryQuantity q) {
+  for (const auto& n : kNames)
+    if (n.q == q) return n.name;
+  return "?";
+}
+
+double history_value(const Model& m, const HistorySeries& s) {
+  const Blocks& B = m.blocks;
+  const auto b = static_cast<size_t>(std::max(0, s.block));
+  switch (s.quantity) {
+    case HistoryQuantity::kXDisp: return B.x[b] - B.x_ref[b];
+    case HistoryQuantity::kYDisp: return B.y[b] - B.y_ref[b];
+    case HistoryQuantity::kXVel: return B.vx[b];
+    case HistoryQuantity::kYVel: return B.vy[b];
+    case HistoryQuantity::kRotation: return B.theta[b];
+    case HistoryQuantity::kAngVel: return B.omega[b];
+    case HistoryQuantity::kXPos: return B.x[b];
+    case HistoryQuantity::kYPos: return B.y[b];
+    case HistoryQuantity::kRatio: return m.ratio;
+    case HistoryQuantity::kUnbalanced: return m.max_unbalanced;
+    case HistoryQuantity::kKinetic: return kinetic_energy(m);
+    case HistoryQuantity::kTime: return m.time;
+    case HistoryQuantity::kTimestep: return m.dt;
+  }
+  return 0.0;
+}
+
+void sample_histories(Model& m, bool force) {
+  Histories& h = m.histories;
+  if (h.series.empty() || h.interval == 0) return;
+  if (!force && m.cycle % h.interval != 0) return;
+  if (!h.cycles.empty() && h.cycles.back() == m.cycle) return;
+  h.cycles.push_back(m.cycle);
+  for (const auto& s : h.series) h.values.push_back(history_value(m, s));
+}
+
+void write_histories_csv(const Histories& h, std::ostream& out) {
+  out << "cycle";
+  for (const auto& s : h.series) out << ',' << s.label;
+  out << '\n';
+  char buf[32];
+  for (size_t r = 0; r < h.rows(); ++r) {
+    out << h.cycles[r];
+    for (size_t c = 0; c < h.columns(); ++c) {
+      std::snprintf(buf, sizeof buf, "%.10g", h.at(r, c));
+      out << ',' << buf;
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace tessera

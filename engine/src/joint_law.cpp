@@ -1,0 +1,79 @@
+#include "tessera/joint_law.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "tessera/contacts.hpp"
+
+namespace tessera {
+
+namespace {
+
+// Linear stiffness, Coulomb slip, cohesion and tensile strength lost for good on failure,
+// dilation while slipping (up to an optional shear displacement).
+class CoulombLaw final : public JointLaw {
+ public:
+  const char* name() const override { return "coulomb"; }
+  void update(const JointProperties& p, double overlap, double dus, JointState& s) const override {
+    const bool bonded = s.flags & kBonded;
+    s.flags &= static_cast<uint8_t>(~(kSlipping | kTouching));
+    const double un = overlap + s.dilation;
+    // Open and unbonded: no stress, and shear history is forgotten.
+    if (!bonded && un <= 0.0) {
+      s.sigma_n = 0.0, s.tau = 0.0;
+      return;
+    }
+    s.flags |= kTouching;
+    s.sigma_n = p.kn * un;
+    // Tensile failure breaks the bond for good.
+    if (bonded && s.sigma_n < -p.tension) {
+      s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);
+      s.sigma_n = 0.0, s.tau = 0.0;
+      return;
+    }
+    if (!bonded && s.sigma_n < 0.0) s.sigma_n = 0.0;
+    s.tau -= p.ks * dus;
+    s.shear_disp += dus;
+    double limit = (bonded ? p.cohesion : 0.0) + s.sigma_n * p.tan_friction;
+    if (std::abs(s.tau) > std::max(limit, 0.0)) {
+      // Shear failure of a bond leaves friction only.
+      if (bonded) {
+        s.flags = static_cast<uint8_t>((s.flags & ~kBonded) | kBroken);
+        limit = s.sigma_n * p.tan_friction;
+        if (s.sigma_n < 0.0) s.sigma_n = 0.0, limit = 0.0;
+      }
+      s.tau = std::copysign(std::max(limit, 0.0), s.tau);
+      s.flags |= kSlipping;
+      if (p.tan_dilation > 0.0 &&
+          (p.dilation_limit <= 0.0 || std::abs(s.shear_disp) < p.dilation_limit))
+        s.dilation += p.tan_dilation * std::abs(dus);
+    }
+  }
+};
+
+const CoulombLaw kCoulomb;
+const JointLaw* const kLaws[] = {&kCoulomb};
+
+}  // namespace
+
+const JointLaw* find_joint_law(const std::string& name) {
+  for (const JointLaw* l : kLaws)
+    if (name == l->name()) return l;
+  return nullptr;
+}
+
+std::vector<std::string> joint_law_names() {
+  std::vector<std::string> out;
+  for (const JointLaw* l : kLaws) out.emplace_back(l->name());
+  return out;
+}
+
+void JointProperties::finalize() {
+  impl = find_joint_law(law);
+  if (!impl) throw std::invalid_argument("unknown joint law '" + law + "'");
+  tan_friction = std::tan(friction * std::numbers::pi / 180.0);
+  tan_dilation = std::tan(dilation * std::numbers::pi / 180.0);
+}
+
+}  // namespace tessera

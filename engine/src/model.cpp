@@ -1,0 +1,42 @@
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+int Model::group_index(const std::string& name, bool create) {
+  for (size_t i = 0; i < groups.size(); ++i)
+    if (groups[i] == name) return static_cast<int>(i);
+  if (!create) return -1;
+  groups.push_back(name);
+  return static_cast<int>(groups.size()) - 1;
+}
+
+int Model::material_index(const std::string& name) const {
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int Model::joint_index(const std::string& name) const {
+  for (size_t i = 0; i < joints.size(); ++i)
+    if (joints[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int Model::joint_for(uint32_t a, uint32_t b) const {
+  const int ga = blocks.group[a], gb = blocks.group[b];
+  // The last assignment that matches either way round wins.
+  for (size_t k = joint_table.size(); k-- > 0;) {
+    const JointAssignment& j = joint_table[k];
+    const auto matches = [](int want, int g) { return want < 0 || want == g; };
+    if ((matches(j.group_a, ga) && matches(j.group_b, gb)) ||
+        (matches(j.group_a, gb) && matches(j.group_b, ga)))
+      return static_cast<int>(j.joint);
+  }
+  return -1;
+}
+
+double Model::tolerance() const {
+  return settings.contact_tolerance > 0.0 ? settings.contact_tolerance : settings.rounding;
+}
+
+}  // namespace tessera

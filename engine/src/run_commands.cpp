@@ -1,0 +1,200 @@
+// Script commands that run the model and write results: step, solve, histories, output, state.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tessera/parallel.hpp"
+#include "tessera/script.hpp"
+#include "tessera/state_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace tessera {
+
+namespace {
+std::string progress_line(const Model& m, double elapsed) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "cycle %10llu  ratio %9.3e  time %11.5e s  elapsed %7.1f s",
+                static_cast<unsigned long long>(m.cycle), m.ratio, m.time, elapsed);
+  return buf;
+}
+}  // namespace
+
+void Interpreter::check_ready() {
+  if (!overlap_checked_) {
+    for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
+    if (const std::string o = find_overlap(model_); !o.empty())
+      fail(o + ": blocks must not overlap; check their vertices");
+    overlap_checked_ = true;
+  }
+}
+
+void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what) {
+  check_ready();
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  auto last = t0;
+  const uint64_t c0 = model_.cycle;
+  const Progress progress = [&](const Model& m) {
+    if (vtk_interval_ && m.cycle % vtk_interval_ == 0) {
+      if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
+      vtk_->write(m);
+    }
+    if (m.cycle % 64 == 0) {
+      const auto now = Clock::now();
+      if (progress_seconds_ > 0 && std::chrono::duration<double>(now - last).count() >= progress_seconds_) {
+        last = now;
+        log(progress_line(m, std::chrono::duration<double>(now - t0).count()));
+      }
+      if (stop_ && stop_->load()) return false;
+    }
+    return true;
+  };
+  try {
+    body(progress);
+  } catch (const ModelError& e) {
+    summary_.cycles_run += model_.cycle - c0;
+    fail(e.what());
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  summary_.cycles_run += model_.cycle - c0;
+  summary_.wall_seconds += wall;
+  log(what + ": " + progress_line(model_, wall));
+}
+
+void Interpreter::cmd_step(Args& a) {
+  if (a.words.size() != 1) fail("write 'step N' with the number of cycles N");
+  const auto n = static_cast<uint64_t>(integer(a.words[0], 0));
+  done(a);
+  run_with_progress([&](const Progress& p) { return run_cycles(model_, n, p, 1) == n; }, "step");
+}
+
+void Interpreter::cmd_solve(Args& a) {
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "' (write 'solve ratio=R cycles=N')");
+  double ratio = 1e-5, cycles = 1e6;
+  take_num(a, "ratio", ratio);
+  take_num(a, "cycles", cycles);
+  done(a);
+  if (ratio <= 0.0) fail("the ratio limit must be positive");
+  if (cycles < 1 || cycles != std::floor(cycles)) fail("the cycle limit must be a whole number of at least 1");
+  SolveResult r;
+  run_with_progress([&](const Progress& p) {
+    r = solve(model_, ratio, static_cast<uint64_t>(cycles), p, 1);
+    return r.converged;
+  }, "solve");
+  if (!r.converged && !r.stopped) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%s:%d: warning: solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e",
+                  file_.c_str(), line_, cycles, model_.ratio, ratio);
+    summary_.warnings.emplace_back(buf);
+    log(buf);
+  }
+}
+
+void Interpreter::cmd_history(Args& a) {
+  if (a.words.size() == 2 && a.words[0] == "interval") {
+    model_.histories.interval = static_cast<uint32_t>(integer(a.words[1], 1));
+    done(a);
+    return;
+  }
+  if (a.words.size() != 1) fail("write 'history QUANTITY [block=ID | at=X,Y] [label=NAME]' or 'history interval N'");
+  HistorySeries s;
+  bool per_block = false;
+  if (!parse_history_quantity(a.words[0], s.quantity, per_block))
+    fail("'" + a.words[0] + "' is not a history quantity" +
+         suggest(a.words[0], {"xdisp", "ydisp", "xvel", "yvel", "rotation", "angvel", "xpos",
+                              "ypos", "ratio", "unbalanced", "kinetic", "time", "timestep"}));
+  s.label = a.words[0];
+  if (per_block) {
+    a.words.clear();
+    std::string label;
+    const bool has_label = take(a, "label", label);
+    const auto sel = select(a);
+    if (sel.size() != 1) fail("a block history needs exactly one block (block=ID or at=X,Y)");
+    s.block = static_cast<int32_t>(sel[0]);
+    s.label = has_label ? label : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1) : s.label;
+  } else {
+    take(a, "label", s.label);
+  }
+  done(a);
+  Histories& h = model_.histories;
+  if (h.find(s.label) >= 0) fail("a history labelled '" + s.label + "' exists already: give label=");
+  // Earlier samples get no value in the new column.
+  std::vector<double> values;
+  values.reserve(h.rows() * (h.columns() + 1));
+  for (size_t r = 0; r < h.rows(); ++r) {
+    for (size_t c = 0; c < h.columns(); ++c) values.push_back(h.at(r, c));
+    values.push_back(std::nan(""));
+  }
+  h.values = std::move(values);
+  h.series.push_back(s);
+}
+
+void Interpreter::cmd_vtk(Args& a) {
+  if (a.words.size() == 2 && a.words[0] == "interval") {
+    vtk_interval_ = static_cast<uint64_t>(integer(a.words[1], 0));
+    done(a);
+    return;
+  }
+  if (!a.words.empty()) fail("write 'vtk' for a snapshot now or 'vtk interval N'");
+  done(a);
+  if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
+  for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
+  vtk_->write(model_);
+}
+
+void Interpreter::cmd_save(Args& a) {
+  if (a.words.size() != 1) fail("write 'save FILE'");
+  done(a);
+  fs::create_directories(out_dir_);
+  save_state(model_, resolve(a.words[0], false));
+}
+
+void Interpreter::cmd_restore(Args& a) {
+  if (a.words.size() != 1) fail("write 'restore FILE'");
+  done(a);
+  const std::string path = resolve(a.words[0], true);
+  try {
+    model_ = restore_state(path);
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  overlap_checked_ = true;
+}
+
+void Interpreter::cmd_call(Args& a) {
+  if (a.words.size() != 1) fail("write 'call FILE'");
+  done(a);
+  const fs::path p(a.words[0]);
+  run_file(p.is_absolute() ? p.string() : (fs::path(dir_stack_.back()) / p).string());
+}
+
+void Interpreter::finish() {
+  fs::create_directories(out_dir_);
+  const std::string csv = (fs::path(out_dir_) / "history.csv").string();
+  std::ofstream out(csv);
+  if (!out) throw std::runtime_error(csv + ": cannot open for writing");
+  write_histories_csv(model_.histories, out);
+  if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
+  for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
+  vtk_->write(model_);
+  nlohmann::json j;
+  j["title"] = title_;
+  j["cycles"] = model_.cycle;
+  j["cycles_this_run"] = summary_.cycles_run;
+  j["simulated_time"] = model_.time;
+  j["timestep"] = model_.dt;
+  j["wall_seconds"] = summary_.wall_seconds;
+  j["final_ratio"] = model_.ratio;
+  j["blocks"] = model_.blocks.size();
+  j["contacts"] = model_.contacts.size();
+  j["threads"] = thread_count();
+  j["warnings"] = summary_.warnings;
+  std::ofstream s((fs::path(out_dir_) / "summary.json").string());
+  s << j.dump(2) << '\n';
+}
+
+}  // namespace tessera

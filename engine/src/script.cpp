@@ -1,0 +1,275 @@
+// Interpreter core: reading lines, splitting words, evaluating numbers, selecting blocks.
+#include "tessera/script.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "tessera/expr.hpp"
+
+namespace fs = std::filesystem;
+
+namespace tessera {
+
+namespace {
+
+// Removes a comment (';' or '#' outside quotes) from a line.
+std::string strip_comment(const std::string& line) {
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '"') quoted = !quoted;
+    if (!quoted && (line[i] == ';' || line[i] == '#')) return line.substr(0, i);
+  }
+  return line;
+}
+
+// Splits at white space, keeping quoted text and parenthesised groups whole.
+std::vector<std::string> split_words(const std::string& line) {
+  std::vector<std::string> words;
+  std::string cur;
+  int depth = 0;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    if (!quoted && c == '(') ++depth;
+    if (!quoted && c == ')') --depth;
+    if (!quoted && depth <= 0 && std::isspace(static_cast<unsigned char>(c))) {
+      if (!cur.empty()) words.push_back(cur), cur.clear();
+      continue;
+    }
+    cur += c;
+  }
+  if (!cur.empty()) words.push_back(cur);
+  return words;
+}
+
+// Edit distance, for "did you mean" hints.
+size_t distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> d(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t prev = d[0];
+    d[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cur = d[j];
+      d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (a[i - 1] != b[j - 1])});
+      prev = cur;
+    }
+  }
+  return d[b.size()];
+}
+
+}  // namespace
+
+std::string suggest(const std::string& word, const std::vector<std::string>& options) {
+  std::string best;
+  size_t best_d = 3;
+  for (const auto& o : options) {
+    const size_t d = distance(word, o);
+    if (d < best_d) best_d = d, best = o;
+  }
+  return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
+}
+
+Interpreter::Interpreter(std::string out_dir, Log log) : out_dir_(std::move(out_dir)), log_(std::move(log)) {
+  if (!log_) log_ = [](const std::string& s) { std::cout << s << std::endl; };
+}
+
+void Interpreter::log(const std::string& s) const { log_(s); }
+
+void Interpreter::fail(const std::string& message) const { throw ScriptError(file_, line_, message); }
+
+void Interpreter::run_file(const std::string& path) {
+  const std::string saved_file = file_;
+  const int saved_line = line_;
+  std::ifstream in(path);
+  if (!in) {
+    if (call_depth_ > 0) fail("cannot open '" + path + "'");
+    throw ScriptError(path, 0, "cannot open the script file");
+  }
+  if (++call_depth_ > 32) fail("'call' nests more than 32 files deep (a file calls itself?)");
+  dir_stack_.push_back(fs::path(path).parent_path().string());
+  if (dir_stack_.back().empty()) dir_stack_.back() = ".";
+  std::string text;
+  int n = 0;
+  while (std::getline(in, text)) {
+    ++n;
+    execute(text, path, n);
+  }
+  dir_stack_.pop_back();
+  --call_depth_;
+  file_ = saved_file, line_ = saved_line;
+}
+
+void Interpreter::execute(const std::string& text, const std::string& file, int line) {
+  file_ = file, line_ = line;
+  const std::vector<std::string> words = split_words(strip_comment(text));
+  if (words.empty()) return;
+  Args a;
+  a.command = words[0];
+  std::transform(a.command.begin(), a.command.end(), a.command.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (size_t i = 1; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    const size_t eq = w.find('=');
+    if (a.command != "set" && eq != std::string::npos && eq > 0 && w[0] != '"' && w[0] != '(')
+      a.keys.emplace_back(w.substr(0, eq), w.substr(eq + 1));
+    else
+      a.words.push_back(w);
+  }
+  a.used.assign(a.keys.size(), false);
+  const auto& h = handlers();
+  const auto it = h.find(a.command);
+  if (it == h.end()) {
+    std::vector<std::string> names;
+    for (const auto& [name, fn] : h) names.push_back(name);
+    fail("unknown command '" + a.command + "'" + suggest(a.command, names));
+  }
+  try {
+    (this->*(it->second))(a);
+  } catch (const ScriptError&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+}
+
+double Interpreter::num(const std::string& text) const {
+  ExprContext ctx;
+  ctx.variable = [this](const std::string& name, double& v) {
+    const auto it = vars_.find(name);
+    if (it != vars_.end()) return v = it->second, true;
+    if (name == "cycle") return v = static_cast<double>(model_.cycle), true;
+    if (name == "time") return v = model_.time, true;
+    if (name == "ratio") return v = model_.ratio, true;
+    if (name == "timestep") return v = model_.dt, true;
+    return false;
+  };
+  ctx.function = [this](const std::string& f, const std::vector<double>& args, double& v) {
+    HistoryQuantity q;
+    bool per_block = false;
+    if (!parse_history_quantity(f, q, per_block) || !per_block || args.size() != 1) return false;
+    const auto id = static_cast<int64_t>(args[0]);
+    if (id < 1 || id > static_cast<int64_t>(model_.blocks.size()))
+      throw ExprError(f + "(" + std::to_string(id) + "): there is no block " + std::to_string(id));
+    v = history_value(model_, {q, static_cast<int32_t>(id - 1), ""});
+    return true;
+  };
+  try {
+    return evaluate(text, ctx);
+  } catch (const ExprError& e) {
+    fail(e.what());
+  }
+}
+
+Vec2 Interpreter::point(const std::string& text) const {
+  const auto parts = split_top_level(text);
+  if (parts.size() != 2) fail("'" + text + "' is not a point: write it as x,y");
+  return {num(parts[0]), num(parts[1])};
+}
+
+int64_t Interpreter::integer(const std::string& text, int64_t min) const {
+  const double v = num(text);
+  if (v != std::floor(v) || v < static_cast<double>(min) || v > 9e15)
+    fail("'" + text + "' must be a whole number of at least " + std::to_string(min));
+  return static_cast<int64_t>(v);
+}
+
+bool Interpreter::take(Args& a, const std::string& key, std::string& value) const {
+  for (size_t i = 0; i < a.keys.size(); ++i)
+    if (a.keys[i].first == key) {
+      if (a.used[i]) fail("'" + key + "' is given twice");
+      a.used[i] = true;
+      value = a.keys[i].second;
+      return true;
+    }
+  return false;
+}
+
+bool Interpreter::take_num(Args& a, const std::string& key, double& value) const {
+  std::string s;
+  if (!take(a, key, s)) return false;
+  value = num(s);
+  return true;
+}
+
+void Interpreter::done(Args& a) const {
+  for (size_t i = 0; i < a.keys.size(); ++i)
+    if (!a.used[i]) {
+      std::vector<std::string> known;
+      for (size_t j = 0; j < a.keys.size(); ++j)
+        if (a.used[j]) known.push_back(a.keys[j].first);
+      fail("'" + a.keys[i].first + "' is not a keyword of '" + a.command + "'" +
+           suggest(a.keys[i].first, {"density", "kn", "ks", "friction", "cohesion", "tension",
+                                     "dilation", "dilation_limit", "law", "group", "material",
+                                     "block", "at", "x", "y", "vx", "vy", "omega", "ratio",
+                                     "cycles", "label", "safety", "groups"}));
+    }
+}
+
+std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
+  const Blocks& B = model_.blocks;
+  std::string v;
+  bool any = false, all = false;
+  double x0 = -1e300, x1 = 1e300, y0 = -1e300, y1 = 1e300;
+  int group = -2;
+  std::vector<size_t> ids;
+  if (take(a, "x", v)) {
+    const Vec2 r = point(v);
+    x0 = std::min(r.x(), r.y()), x1 = std::max(r.x(), r.y()), any = true;
+  }
+  if (take(a, "y", v)) {
+    const Vec2 r = point(v);
+    y0 = std::min(r.x(), r.y()), y1 = std::max(r.x(), r.y()), any = true;
+  }
+  if (take(a, "group", v)) {
+    group = model_.group_index(v, false);
+    if (group < 0) fail("there is no group '" + v + "'" + suggest(v, model_.groups));
+    any = true;
+  }
+  if (take(a, "block", v)) {
+    for (const auto& part : split_top_level(v)) {
+      const int64_t id = integer(part, 1);
+      if (id > static_cast<int64_t>(B.size()))
+        fail("there is no block " + std::to_string(id) + " (the model has " + std::to_string(B.size()) + ")");
+      ids.push_back(static_cast<size_t>(id - 1));
+    }
+    any = true;
+  }
+  if (take(a, "at", v)) {
+    const Vec2 p = point(v);
+    bool hit = false;
+    for (size_t b = 0; b < B.size() && !hit; ++b)
+      if (point_in_polygon(p, B.world_polygon(b))) ids.push_back(b), hit = true;
+    if (!hit) fail("no block contains the point " + v);
+    any = true;
+  }
+  auto& words = a.words;
+  const auto it = std::find(words.begin(), words.end(), "all");
+  if (it != words.end()) words.erase(it), all = any = true;
+  if (!any) fail("'" + a.command + "' needs blocks to act on: all, block=ID, at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1");
+  if (!allow_words && !words.empty()) fail("unexpected word '" + words[0] + "' after '" + a.command + "'");
+  std::vector<size_t> out;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;
+    if (group >= -1 && B.group[b] != group) continue;
+    if (B.x[b] < x0 || B.x[b] > x1 || B.y[b] < y0 || B.y[b] > y1) continue;
+    out.push_back(b);
+  }
+  (void)all;
+  if (out.empty()) fail("no block matches the selection of '" + a.command + "'");
+  return out;
+}
+
+std::string Interpreter::resolve(const std::string& path, bool for_reading) const {
+  const fs::path p(path);
+  if (p.is_absolute()) return path;
+  const fs::path in_out = fs::path(out_dir_) / p;
+  if (!for_reading || fs::exists(in_out)) return in_out.string();
+  return (fs::path(dir_stack_.back()) / p).string();
+}
+
+}  // namespace tessera

@@ -1,0 +1,167 @@
+// Binary state file: a magic word, a version, then every field of the model in a fixed order.
+// Doubles are written as their bytes, so a restored run continues bit for bit.
+#include "tessera/state_io.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <type_traits>
+
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+namespace {
+
+constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
+constexpr uint32_t kVersion = 1;
+static_assert(sizeof(Vec2) == 2 * sizeof(double));
+
+class Writer {
+ public:
+  explicit Writer(std::ostream& out) : out_(out) {}
+  template <class T>
+  void pod(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out_.write(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  template <class T>
+  void vec(const std::vector<T>& v) {
+    pod<uint64_t>(v.size());
+    if constexpr (std::is_same_v<T, Vec2>) {
+      for (const Vec2& p : v) pod(p.x()), pod(p.y());
+    } else {
+      out_.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+    }
+  }
+  void str(const std::string& s) {
+    pod<uint64_t>(s.size());
+    out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+  }
+
+ private:
+  std::ostream& out_;
+};
+
+class Reader {
+ public:
+  Reader(std::istream& in, const std::string& path) : in_(in), path_(path) {}
+  template <class T>
+  void pod(T& v) {
+    in_.read(reinterpret_cast<char*>(&v), sizeof v);
+    check();
+  }
+  template <class T>
+  void vec(std::vector<T>& v) {
+    uint64_t n = 0;
+    pod(n);
+    if (n > (1ULL << 34)) fail("a length is implausible");
+    v.resize(n);
+    if constexpr (std::is_same_v<T, Vec2>) {
+      for (Vec2& p : v) pod(p.x()), pod(p.y());
+    } else {
+      in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
+      check();
+    }
+  }
+  void str(std::string& s) {
+    uint64_t n = 0;
+    pod(n);
+    if (n > (1ULL << 24)) fail("a name is implausibly long");
+    s.resize(n);
+    in_.read(s.data(), static_cast<std::streamsize>(n));
+    check();
+  }
+  [[noreturn]] void fail(const std::string& why) {
+    throw std::runtime_error(path_ + ": not a readable Tessera state file (" + why + ")");
+  }
+
+ private:
+  void check() {
+    if (!in_) fail("it ends early");
+  }
+  std::istream& in_;
+  std::string path_;
+};
+
+// One field list for both directions, so save and restore cannot drift apart.
+template <class IO>
+void fields(IO& io, auto& m) {
+  auto& S = m.settings;
+  io.pod(S.gravity.x()), io.pod(S.gravity.y()), io.pod(S.rounding), io.pod(S.contact_tolerance);
+  io.pod(S.damping), io.pod(S.local_alpha), io.pod(S.global_ratio), io.pod(S.dt_safety);
+  io.pod(S.dt_fixed);
+  auto& B = m.blocks;
+  for (auto* v : {&B.x, &B.y, &B.theta, &B.vx, &B.vy, &B.omega, &B.fx, &B.fy, &B.moment,
+                  &B.applied, &B.x_ref, &B.y_ref, &B.mass, &B.inertia, &B.inv_mass,
+                  &B.inv_inertia, &B.fixed_vx, &B.fixed_vy, &B.fixed_omega, &B.arc_radius,
+                  &B.round_length, &B.area, &B.perimeter, &B.bound_radius})
+    io.vec(*v);
+  io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
+  io.vec(B.convex), io.vec(B.world_vertex), io.vec(B.world_arc_centre);
+  io.vec(B.group), io.vec(B.material), io.vec(B.id);
+  auto& C = m.contacts;
+  io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.kind), io.vec(C.feature), io.vec(C.flags);
+  io.vec(C.joint), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
+  io.vec(C.length), io.vec(C.sigma_n), io.vec(C.tau), io.vec(C.dilation), io.vec(C.shear_disp);
+  io.vec(C.force), io.vec(C.pair_begin);
+  uint64_t count = m.materials.size();
+  io.pod(count);
+  m.materials.resize(count);
+  for (auto& mat : m.materials) io.str(mat.name), io.pod(mat.density);
+  count = m.joints.size();
+  io.pod(count);
+  m.joints.resize(count);
+  for (auto& j : m.joints) {
+    io.str(j.name), io.str(j.law), io.pod(j.kn), io.pod(j.ks), io.pod(j.friction);
+    io.pod(j.cohesion), io.pod(j.tension), io.pod(j.dilation), io.pod(j.dilation_limit);
+  }
+  io.vec(m.joint_table);
+  count = m.groups.size();
+  io.pod(count);
+  m.groups.resize(count);
+  for (auto& g : m.groups) io.str(g);
+  auto& H = m.histories;
+  io.pod(H.interval);
+  count = H.series.size();
+  io.pod(count);
+  H.series.resize(count);
+  for (auto& s : H.series) io.pod(s.quantity), io.pod(s.block), io.str(s.label);
+  io.vec(H.cycles), io.vec(H.values);
+  io.pod(m.cycle), io.pod(m.time), io.pod(m.dt), io.pod(m.dt_dirty), io.pod(m.global_c);
+  io.pod(m.max_unbalanced), io.pod(m.mean_applied), io.pod(m.ratio);
+  io.vec(m.det_x), io.vec(m.det_y), io.vec(m.det_theta), io.pod(m.detection_due);
+  io.pod(m.detection_passes);
+}
+
+}  // namespace
+
+void save_state(const Model& m, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  out.write(kMagic, sizeof kMagic);
+  Writer w(out);
+  w.pod(kVersion);
+  // The field list is shared with restore; it only reads through the const model here.
+  fields(w, const_cast<Model&>(m));
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+Model restore_state(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open for reading");
+  char magic[sizeof kMagic] = {};
+  in.read(magic, sizeof magic);
+  Reader r(in, path);
+  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) r.fail("wrong magic word");
+  uint32_t version = 0;
+  r.pod(version);
+  if (version != kVersion) r.fail("version " + std::to_string(version) + " is not supported");
+  Model m;
+  fields(r, m);
+  for (auto& j : m.joints) j.finalize();
+  build_adjacency(m);
+  return m;
+}
+
+}  // namespace tessera

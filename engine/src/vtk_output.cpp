@@ -1,0 +1,145 @@
+#include "tessera/vtk_output.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace tessera {
+
+namespace {
+
+// Text of a list of numbers, for a DataArray body.
+template <class F>
+void numbers(std::ostream& out, size_t n, F value) {
+  char buf[32];
+  for (size_t i = 0; i < n; ++i) {
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value(i)));
+    out << buf << ((i % 12 == 11) ? '\n' : ' ');
+  }
+  out << '\n';
+}
+
+// One DataArray element with `comps` components per tuple.
+template <class F>
+void array(std::ostream& out, const char* type, const char* name, int comps, size_t n, F value) {
+  out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\""
+      << comps << "\" format=\"ascii\">\n";
+  numbers(out, n * static_cast<size_t>(comps), value);
+  out << "</DataArray>\n";
+}
+
+std::ofstream open_file(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  return out;
+}
+
+void write_blocks(const Model& m, const std::string& path) {
+  const Blocks& B = m.blocks;
+  const size_t n = B.size(), nv = B.world_vertex.size();
+  std::ofstream out = open_file(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<PolyData>\n<Piece NumberOfPoints=\"" << nv << "\" NumberOfPolys=\"" << n << "\">\n";
+  out << "<Points>\n";
+  array(out, "Float64", "Points", 3, nv, [&](size_t k) {
+    const Vec2& p = B.world_vertex[k / 3];
+    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
+  });
+  out << "</Points>\n<Polys>\n";
+  array(out, "Int64", "connectivity", 1, nv, [](size_t k) { return k; });
+  array(out, "Int64", "offsets", 1, n, [&](size_t b) { return B.vert_begin[b + 1]; });
+  out << "</Polys>\n<CellData Scalars=\"group\">\n";
+  array(out, "Int32", "id", 1, n, [&](size_t b) { return B.id[b]; });
+  array(out, "Int32", "group", 1, n, [&](size_t b) { return B.group[b]; });
+  array(out, "Int32", "material", 1, n, [&](size_t b) { return B.material[b]; });
+  array(out, "Int32", "fixed", 1, n, [&](size_t b) { return B.fixity[b]; });
+  array(out, "Float64", "velocity", 3, n, [&](size_t k) {
+    const size_t b = k / 3;
+    return k % 3 == 0 ? B.vx[b] : k % 3 == 1 ? B.vy[b] : 0.0;
+  });
+  array(out, "Float64", "displacement", 3, n, [&](size_t k) {
+    const size_t b = k / 3;
+    return k % 3 == 0 ? B.x[b] - B.x_ref[b] : k % 3 == 1 ? B.y[b] - B.y_ref[b] : 0.0;
+  });
+  array(out, "Float64", "rotation", 1, n, [&](size_t b) { return B.theta[b]; });
+  array(out, "Float64", "angular_velocity", 1, n, [&](size_t b) { return B.omega[b]; });
+  out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+void write_contacts(const Model& m, const std::string& path) {
+  const Contacts& C = m.contacts;
+  const Blocks& B = m.blocks;
+  const size_t n = C.size();
+  std::ofstream out = open_file(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<PolyData>\n<Piece NumberOfPoints=\"" << 2 * n << "\" NumberOfLines=\"" << n << "\">\n";
+  // Each contact is drawn as a segment of its length along the interface.
+  out << "<Points>\n";
+  array(out, "Float64", "Points", 3, 2 * n, [&](size_t k) {
+    const size_t i = k / 6, end = (k / 3) % 2;
+    const Vec2 t = perp(C.normal[i]) * (0.5 * std::max(C.length[i], 1e-6) * (end ? 1.0 : -1.0));
+    const Vec2 p = C.point[i] + t;
+    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
+  });
+  out << "</Points>\n<Lines>\n";
+  array(out, "Int64", "connectivity", 1, 2 * n, [](size_t k) { return k; });
+  array(out, "Int64", "offsets", 1, n, [](size_t i) { return 2 * (i + 1); });
+  out << "</Lines>\n<CellData Scalars=\"normal_force\">\n";
+  array(out, "Float64", "normal_force", 1, n, [&](size_t i) { return C.sigma_n[i] * C.length[i]; });
+  array(out, "Float64", "shear_force", 1, n, [&](size_t i) { return C.tau[i] * C.length[i]; });
+  array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return C.sigma_n[i]; });
+  array(out, "Float64", "shear_stress", 1, n, [&](size_t i) { return C.tau[i]; });
+  array(out, "Float64", "opening", 1, n, [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
+  array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
+  array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });
+  array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(C.flags[i]); });
+  array(out, "Int32", "block_a", 1, n, [&](size_t i) { return B.id[C.a[i]]; });
+  array(out, "Int32", "block_b", 1, n, [&](size_t i) { return B.id[C.b[i]]; });
+  array(out, "Float64", "normal", 3, n, [&](size_t k) {
+    const Vec2& v = C.normal[k / 3];
+    return k % 3 == 0 ? v.x() : k % 3 == 1 ? v.y() : 0.0;
+  });
+  out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+}  // namespace
+
+int contact_state_code(uint8_t flags) {
+  if (!(flags & kTouching)) return 0;
+  if (flags & kSlipping) return 2;
+  if (flags & kBonded) return 3;
+  return 1;
+}
+
+VtkSeries::VtkSeries(std::string dir) : dir_(std::move(dir)) {}
+
+void VtkSeries::write(const Model& m) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  if (ec) throw std::runtime_error(dir_ + ": cannot create the output folder (" + ec.message() + ")");
+  char name[64];
+  std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
+  write_blocks(m, dir_ + "/blocks_" + name);
+  write_contacts(m, dir_ + "/contacts_" + name);
+  times_.push_back(m.time);
+  write_collection("blocks");
+  write_collection("contacts");
+}
+
+void VtkSeries::write_collection(const std::string& name) const {
+  const std::string path = dir_ + "/" + name + ".pvd";
+  std::ofstream out = open_file(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  char buf[160];
+  for (size_t f = 0; f < times_.size(); ++f) {
+    std::snprintf(buf, sizeof buf, "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n",
+                  times_[f], name.c_str(), f);
+    out << buf;
+  }
+  out << "</Collection>\n</VTKFile>\n";
+}
+
+}  // namespace tessera
