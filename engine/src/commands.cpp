@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "tessera/expr.hpp"
+#include "tessera/generators.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/script.hpp"
 
@@ -22,7 +23,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"step", &Interpreter::cmd_step},         {"solve", &Interpreter::cmd_solve},
       {"history", &Interpreter::cmd_history},   {"vtk", &Interpreter::cmd_vtk},
       {"save", &Interpreter::cmd_save},         {"restore", &Interpreter::cmd_restore},
-      {"call", &Interpreter::cmd_call},
+      {"call", &Interpreter::cmd_call},         {"wall", &Interpreter::cmd_wall},
   };
   return h;
 }
@@ -100,7 +101,7 @@ void Interpreter::cmd_material(Args& a) {
   a.words.erase(a.words.begin(), a.words.begin() + 2);
   if (verb == "define") {
     double rho = 0.0;
-    if (!take_num(a, "density", rho)) fail("material '" + name + "' needs density=");
+    if (!take_num(a, "density", rho)) missing(a, "density", "material '" + name + "'");
     if (rho <= 0.0) fail("the density of material '" + name + "' must be positive");
     done(a);
     int k = model_.material_index(name);
@@ -139,7 +140,7 @@ void Interpreter::cmd_joint(Args& a) {
     if (existing >= 0) j = model_.joints[static_cast<size_t>(existing)];
     const bool fresh = existing < 0;
     auto need = [&](const char* key, double& v) {
-      if (!take_num(a, key, v) && fresh) fail("joint '" + name + "' needs " + key + "=");
+      if (!take_num(a, key, v) && fresh) missing(a, key, "joint '" + name + "'");
     };
     need("kn", j.kn);
     need("ks", j.ks);
@@ -214,6 +215,30 @@ void Interpreter::cmd_block(Args& a) {
   const double rho = material >= 0 ? model_.materials[static_cast<size_t>(material)].density : 0.0;
   model_.blocks.add(pts, model_.settings.rounding, rho, group, material);
   model_.touch();
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_wall(Args& a) {
+  if (model_.settings.rounding <= 0.0) fail("set the rounding length with 'round D' before the first block");
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  WallSpec w;
+  std::string v;
+  if (take(a, "origin", v)) w.origin = point(v);
+  if (!take(a, "brick", v)) missing(a, "brick", "'wall'");
+  const Vec2 brick = point(v);
+  w.brick_length = brick.x(), w.brick_height = brick.y();
+  if (w.brick_length <= 0.0 || w.brick_height <= 0.0) fail("brick sizes must be positive");
+  if (!take(a, "courses", v)) missing(a, "courses", "'wall'");
+  w.courses = static_cast<int>(integer(v, 1));
+  if (!take(a, "bricks", v)) missing(a, "bricks", "'wall' (bricks per course)");
+  w.bricks = static_cast<int>(integer(v, 1));
+  if (take(a, "group", v)) w.group = model_.group_index(v, true);
+  if (take(a, "material", v)) {
+    w.material = model_.material_index(v);
+    if (w.material < 0) fail("there is no material '" + v + "' (define it first)");
+  }
+  done(a);
+  add_running_bond_wall(model_, w);
   overlap_checked_ = false;
 }
 

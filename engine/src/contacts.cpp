@@ -5,7 +5,7 @@ namespace tessera {
 void Contacts::clear() {
   a.clear(), b.clear(), corner.clear(), kind.clear(), feature.clear(), flags.clear();
   joint.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(), length.clear();
-  sigma_n.clear(), tau.clear(), dilation.clear(), shear_disp.clear(), force.clear();
+  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear();
   pair_begin.assign(1, 0);
 }
 
@@ -14,7 +14,8 @@ void Contacts::push_from(const Contacts& s, size_t i) {
   kind.push_back(s.kind[i]), feature.push_back(s.feature[i]), flags.push_back(s.flags[i]);
   joint.push_back(s.joint[i]), normal.push_back(s.normal[i]), point.push_back(s.point[i]);
   gap.push_back(s.gap[i]), chord.push_back(s.chord[i]), length.push_back(s.length[i]);
-  sigma_n.push_back(s.sigma_n[i]), tau.push_back(s.tau[i]), dilation.push_back(s.dilation[i]);
+  fn.push_back(s.fn[i]), fs.push_back(s.fs[i]), un_prev.push_back(s.un_prev[i]);
+  dilation.push_back(s.dilation[i]);
   shear_disp.push_back(s.shear_disp[i]), force.push_back(s.force[i]);
 }
 
@@ -23,7 +24,8 @@ void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joi
   kind.push_back(kLost), feature.push_back(0), flags.push_back(0), joint.push_back(joint_);
   normal.push_back(Vec2::Zero()), point.push_back(Vec2::Zero());
   gap.push_back(0.0), chord.push_back(0.0), length.push_back(0.0);
-  sigma_n.push_back(0.0), tau.push_back(0.0), dilation.push_back(0.0), shear_disp.push_back(0.0);
+  fn.push_back(0.0), fs.push_back(0.0), un_prev.push_back(0.0), dilation.push_back(0.0);
+  shear_disp.push_back(0.0);
   force.push_back(Vec2::Zero());
 }
 

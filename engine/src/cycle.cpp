@@ -37,47 +37,39 @@ inline Vec2 point_velocity(const Blocks& B, uint32_t b, const Vec2& p) {
   return {B.vx[b] - B.omega[b] * (p.y() - B.y[b]), B.vy[b] + B.omega[b] * (p.x() - B.x[b])};
 }
 
-// Contact geometry from the current positions, then the joint law (one contact at a time).
+// Contact geometry from the current positions: the nearest feature of the other block to each
+// corner (searched around last cycle's feature), gap, normal, contact point and chord.
 void update_contacts(Model& m) {
   const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
-  const double dt = m.dt;
   parallel_for(C.size(), [&](size_t i0, size_t i1) {
     for (size_t i = i0; i < i1; ++i) {
       const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
       FeatureHit hit;
-      const bool corners = a < b;
       const bool lost = C.kind[i] == kLost;
       const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
       const int count = lost ? 2 * static_cast<int>(B.vertex_count(b)) : 5;
-      const Vec2& c = B.world_arc_centre[v];
-      if (!nearest_feature(B, b, c, B.arc_radius[v], corners, first, count, hit)) {
+      if (!nearest_feature(B, b, B.world_arc_centre[v], B.arc_radius[v], a < b, first, count, hit)) {
+        // The corner has left the reach of every feature: it carries nothing until found again.
         C.kind[i] = kLost;
         C.gap[i] = std::numeric_limits<double>::infinity();
         C.chord[i] = 0.0;
-        C.sigma_n[i] = 0.0, C.tau[i] = 0.0;
-        C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
         continue;
       }
       C.kind[i] = hit.kind, C.feature[i] = hit.feature, C.gap[i] = hit.gap;
       C.normal[i] = hit.normal, C.point[i] = hit.point, C.chord[i] = hit.chord;
-      // Shear displacement increment of a relative to b over the last step.
-      const Vec2 t = perp(hit.normal);
-      const double dus = (point_velocity(B, a, hit.point) - point_velocity(B, b, hit.point)).dot(t) * dt;
-      JointState s{C.sigma_n[i], C.tau[i], C.dilation[i], C.shear_disp[i], C.flags[i]};
-      const JointProperties& jp = m.joints[C.joint[i]];
-      jp.impl->update(jp, -hit.gap, dus, s);
-      C.sigma_n[i] = s.sigma_n, C.tau[i] = s.tau, C.dilation[i] = s.dilation;
-      C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
     }
   });
 }
 
-// Shares each interface's length among its touching contacts (L = RQ1/2 + RQ2/2, the
-// neighbours along the interface as Q1, Q2; never less than the contact's own chord), and
-// turns stresses into forces.
+// Per interface: shares the length among its contacts (L = RQ1/2 + RQ2/2 with the neighbours
+// along the interface as Q1, Q2; never less than the contact's own chord), then applies the
+// joint law to each contact and turns its forces into a vector.
 void update_interfaces(Model& m) {
+  const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
+  const double dt = m.dt;
+  const double merge = 0.25 * m.settings.rounding;
   parallel_for(C.pair_count(), [&](size_t p0, size_t p1) {
     std::vector<std::pair<double, uint32_t>> along;
     for (size_t p = p0; p < p1; ++p) {
@@ -86,22 +78,55 @@ void update_interfaces(Model& m) {
       Vec2 t = Vec2::Zero();
       for (uint32_t i = c0; i < c1; ++i) {
         C.length[i] = 0.0;
-        C.force[i] = Vec2::Zero();
-        if (!(C.flags[i] & kTouching)) continue;
+        if (C.kind[i] == kLost) continue;
         if (along.empty()) t = perp(C.normal[i]);
         along.emplace_back(C.point[i].dot(t), i);
       }
-      if (along.empty()) continue;
       std::sort(along.begin(), along.end());
+      // Contacts closer than `merge` along the interface stand at one point (two corners meeting
+      // face to face): the point's share is split evenly, so that round-off in their order can
+      // never move the length from one to the other.
       const size_t k = along.size();
-      for (size_t j = 0; j < k; ++j) {
-        const uint32_t i = along[j].second;
-        double len = 0.0;
-        if (j > 0) len += 0.5 * (along[j].first - along[j - 1].first);
-        if (j + 1 < k) len += 0.5 * (along[j + 1].first - along[j].first);
-        len = std::max(len, C.chord[i]);
-        C.length[i] = len;
-        C.force[i] = len * (C.sigma_n[i] * C.normal[i] + C.tau[i] * perp(C.normal[i]));
+      size_t g0 = 0;
+      double prev_centre = 0.0;
+      while (g0 < k) {
+        size_t g1 = g0 + 1;
+        while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) ++g1;
+        double centre = 0.0;
+        for (size_t j = g0; j < g1; ++j) centre += along[j].first;
+        centre /= static_cast<double>(g1 - g0);
+        double next_centre = centre;
+        if (g1 < k) {
+          size_t g2 = g1 + 1;
+          while (g2 < k && along[g2].first - along[g2 - 1].first <= merge) ++g2;
+          next_centre = 0.0;
+          for (size_t j = g1; j < g2; ++j) next_centre += along[j].first;
+          next_centre /= static_cast<double>(g2 - g1);
+        }
+        const double len = 0.5 * ((g0 > 0 ? centre - prev_centre : 0.0) + (next_centre - centre));
+        for (size_t j = g0; j < g1; ++j)
+          C.length[along[j].second] = std::max(len / static_cast<double>(g1 - g0), C.chord[along[j].second]);
+        prev_centre = centre;
+        g0 = g1;
+      }
+      for (uint32_t i = c0; i < c1; ++i) {
+        if (C.kind[i] == kLost) {
+          if (C.flags[i] & kBonded) C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
+          C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
+          C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
+          C.force[i] = Vec2::Zero();
+          continue;
+        }
+        // Shear displacement increment of a relative to b over the last step.
+        const Vec2 n = C.normal[i], tn = perp(n);
+        const double dus =
+            (point_velocity(B, C.a[i], C.point[i]) - point_velocity(B, C.b[i], C.point[i])).dot(tn) * dt;
+        JointState s{C.fn[i], C.fs[i], C.un_prev[i], C.dilation[i], C.shear_disp[i], C.flags[i]};
+        const JointProperties& jp = m.joints[C.joint[i]];
+        jp.impl->update(jp, C.length[i], -C.gap[i], dus, s);
+        C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
+        C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
+        C.force[i] = s.fn * n + s.fs * tn;
       }
     }
   }, 64);
@@ -118,7 +143,7 @@ void move_blocks(Model& m) {
   const double dt = m.dt;
   const size_t n = B.size();
   const double tol = m.tolerance();
-  std::vector<double> unbalanced(n, 0.0), drift(n, 0.0);
+  std::vector<double> unbalanced(n, 0.0), drift(n, 0.0), jump(n, 0.0);
   // Resultants: gravity plus contact forces, gathered in a fixed order per block.
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
@@ -189,13 +214,16 @@ void move_blocks(Model& m) {
       // Largest vertex displacement since the last detection pass.
       const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
       drift[b] = std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
+      // A block that moves a tenth of its size in one step has left explicit dynamics.
+      jump[b] = dt * (std::hypot(B.vx[b], B.vy[b]) + B.bound_radius[b] * std::abs(B.omega[b])) / B.bound_radius[b];
     }
   });
   // Convergence measures over the blocks that move under load.
-  size_t free_blocks = 0;
+  size_t free_blocks = 0, worst = 0;
   double max_ub = 0.0, max_drift = 0.0;
   for (size_t b = 0; b < n; ++b) {
     max_drift = std::max(max_drift, drift[b]);
+    if (!(jump[b] <= jump[worst])) worst = b;
     if (B.inv_mass[b] == 0.0 || (B.fixity[b] & (kFixX | kFixY)) == (kFixX | kFixY)) continue;
     ++free_blocks;
     max_ub = std::max(max_ub, unbalanced[b]);
@@ -208,10 +236,11 @@ void move_blocks(Model& m) {
   m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
   m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
   if (max_drift > 0.5 * tol) m.detection_due = true;
-  if (!std::isfinite(max_ub) || !std::isfinite(max_drift))
-    throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
-                     ": forces or positions are no longer finite (time step too large for the "
-                     "stiffness, or blocks overlapping badly)");
+  if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(jump[worst] < 0.1))
+    throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
+                     std::to_string(B.id[worst]) +
+                     " moved more than a tenth of its size in one step (time step too large for "
+                     "the joint stiffness, or blocks overlapping badly)");
 }
 
 }  // namespace

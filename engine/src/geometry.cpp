@@ -76,7 +76,6 @@ std::string polygon_problem(const std::vector<Vec2>& pts) {
       return s.str();
     }
   }
-  if (std::abs(signed_area(pts)) <= 1e-9 * size * size) return "the polygon has no area";
   // Non-adjacent edges must not meet.
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 1; j < n; ++j) {
@@ -87,6 +86,7 @@ std::string polygon_problem(const std::vector<Vec2>& pts) {
         return s.str();
       }
     }
+  if (std::abs(signed_area(pts)) <= 1e-9 * size * size) return "the polygon has no area";
   return {};
 }
 

@@ -1,5 +1,6 @@
 #include "tessera/joint_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -15,35 +16,41 @@ namespace {
 class CoulombLaw final : public JointLaw {
  public:
   const char* name() const override { return "coulomb"; }
-  void update(const JointProperties& p, double overlap, double dus, JointState& s) const override {
+  void update(const JointProperties& p, double L, double overlap, double dus,
+              JointState& s) const override {
     const bool bonded = s.flags & kBonded;
     s.flags &= static_cast<uint8_t>(~(kSlipping | kTouching));
     const double un = overlap + s.dilation;
-    // Open and unbonded: no stress, and shear history is forgotten.
+    const double dun = un - s.un_prev;
+    s.un_prev = un;
+    // Open and unbonded: no force, and shear history is forgotten.
     if (!bonded && un <= 0.0) {
-      s.sigma_n = 0.0, s.tau = 0.0;
+      s.fn = 0.0, s.fs = 0.0;
       return;
     }
     s.flags |= kTouching;
-    s.sigma_n = p.kn * un;
+    // Incremental normal force, held between zero (or the bond) and the total-form value.
+    const double kn = p.kn * L, total = kn * un;
+    const double trial = s.fn + kn * dun;
+    if (!bonded) s.fn = std::clamp(trial, 0.0, total);
+    else s.fn = un >= 0.0 ? std::min(trial, total) : std::max(trial, total);
     // Tensile failure breaks the bond for good.
-    if (bonded && s.sigma_n < -p.tension) {
+    if (bonded && s.fn < -p.tension * L) {
       s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);
-      s.sigma_n = 0.0, s.tau = 0.0;
+      s.fn = 0.0, s.fs = 0.0;
       return;
     }
-    if (!bonded && s.sigma_n < 0.0) s.sigma_n = 0.0;
-    s.tau -= p.ks * dus;
+    s.fs -= p.ks * L * dus;
     s.shear_disp += dus;
-    double limit = (bonded ? p.cohesion : 0.0) + s.sigma_n * p.tan_friction;
-    if (std::abs(s.tau) > std::max(limit, 0.0)) {
+    double limit = (bonded ? p.cohesion * L : 0.0) + s.fn * p.tan_friction;
+    if (std::abs(s.fs) > std::max(limit, 0.0)) {
       // Shear failure of a bond leaves friction only.
       if (bonded) {
         s.flags = static_cast<uint8_t>((s.flags & ~kBonded) | kBroken);
-        limit = s.sigma_n * p.tan_friction;
-        if (s.sigma_n < 0.0) s.sigma_n = 0.0, limit = 0.0;
+        s.fn = std::max(s.fn, 0.0);
+        limit = s.fn * p.tan_friction;
       }
-      s.tau = std::copysign(std::max(limit, 0.0), s.tau);
+      s.fs = std::copysign(std::max(limit, 0.0), s.fs);
       s.flags |= kSlipping;
       if (p.tan_dilation > 0.0 &&
           (p.dilation_limit <= 0.0 || std::abs(s.shear_disp) < p.dilation_limit))

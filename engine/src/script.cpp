@@ -46,20 +46,18 @@ std::vector<std::string> split_words(const std::string& line) {
   return words;
 }
 
-// Edit distance, for "did you mean" hints.
+// Edit distance with transpositions (optimal string alignment), for "did you mean" hints.
 size_t distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> d(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t prev = d[0];
-    d[0] = i;
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
     for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t cur = d[j];
-      d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (a[i - 1] != b[j - 1])});
-      prev = cur;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-  }
-  return d[b.size()];
+  return d[a.size()][b.size()];
 }
 
 }  // namespace
@@ -196,6 +194,14 @@ bool Interpreter::take_num(Args& a, const std::string& key, double& value) const
   return true;
 }
 
+void Interpreter::missing(const Args& a, const std::string& key, const std::string& what) const {
+  for (size_t i = 0; i < a.keys.size(); ++i)
+    if (!a.used[i] && !suggest(a.keys[i].first, {key}).empty())
+      fail(what + " needs " + key + "= ('" + a.keys[i].first + "' is not a keyword of '" +
+           a.command + "'; did you mean '" + key + "'?)");
+  fail(what + " needs " + key + "=");
+}
+
 void Interpreter::done(Args& a) const {
   for (size_t i = 0; i < a.keys.size(); ++i)
     if (!a.used[i]) {
@@ -206,7 +212,7 @@ void Interpreter::done(Args& a) const {
            suggest(a.keys[i].first, {"density", "kn", "ks", "friction", "cohesion", "tension",
                                      "dilation", "dilation_limit", "law", "group", "material",
                                      "block", "at", "x", "y", "vx", "vy", "omega", "ratio",
-                                     "cycles", "label", "safety", "groups"}));
+                                     "cycles", "label", "safety", "groups", "origin", "brick", "courses", "bricks"}));
     }
 }
 

@@ -103,7 +103,8 @@ void fields(IO& io, auto& m) {
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.kind), io.vec(C.feature), io.vec(C.flags);
   io.vec(C.joint), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
-  io.vec(C.length), io.vec(C.sigma_n), io.vec(C.tau), io.vec(C.dilation), io.vec(C.shear_disp);
+  io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
+  io.vec(C.shear_disp);
   io.vec(C.force), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
   io.pod(count);

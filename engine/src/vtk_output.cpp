@@ -87,10 +87,11 @@ void write_contacts(const Model& m, const std::string& path) {
   array(out, "Int64", "connectivity", 1, 2 * n, [](size_t k) { return k; });
   array(out, "Int64", "offsets", 1, n, [](size_t i) { return 2 * (i + 1); });
   out << "</Lines>\n<CellData Scalars=\"normal_force\">\n";
-  array(out, "Float64", "normal_force", 1, n, [&](size_t i) { return C.sigma_n[i] * C.length[i]; });
-  array(out, "Float64", "shear_force", 1, n, [&](size_t i) { return C.tau[i] * C.length[i]; });
-  array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return C.sigma_n[i]; });
-  array(out, "Float64", "shear_stress", 1, n, [&](size_t i) { return C.tau[i]; });
+  auto per_length = [&](double f, size_t i) { return C.length[i] > 0.0 ? f / C.length[i] : 0.0; };
+  array(out, "Float64", "normal_force", 1, n, [&](size_t i) { return C.fn[i]; });
+  array(out, "Float64", "shear_force", 1, n, [&](size_t i) { return C.fs[i]; });
+  array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return per_length(C.fn[i], i); });
+  array(out, "Float64", "shear_stress", 1, n, [&](size_t i) { return per_length(C.fs[i], i); });
   array(out, "Float64", "opening", 1, n, [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
   array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
   array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });

@@ -8,9 +8,10 @@
 //
 // Identity is (a, corner, b); contacts are sorted by unordered block pair and then by identity,
 // so that the contacts of one interface lie together. Each interface shares its length between
-// its touching contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts
-// along the interface as Q1 and Q2; a lone contact takes the chord of its rounded arc across the
-// opposite edge or arc (cases 2 and 3 of 5.2.2).
+// its contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts along the
+// interface as Q1 and Q2 (all contacts within the tolerance count, touching or not, so that L
+// does not jump when one corner lifts); a lone contact, and never less than this, takes the chord
+// of its rounded arc across the opposite edge or arc (cases 2 and 3 of 5.2.2).
 //
 // A corner-to-corner touch is kept once: only the owner with the lower block index may face a
 // corner; the higher one faces edges only. Contacts are found within a tolerance before the
@@ -45,9 +46,9 @@ struct Contacts {
   // when overlapping), chord of the rounded arc, and the share of interface length.
   std::vector<Vec2> normal, point;
   std::vector<double> gap, chord, length;
-  // Joint law state: normal and shear stress on a (compression positive), dilation and total
-  // shear displacement.
-  std::vector<double> sigma_n, tau, dilation, shear_disp;
+  // Joint law state: normal and shear force on a (compression positive), the normal
+  // displacement of the last cycle, dilation and total shear displacement.
+  std::vector<double> fn, fs, un_prev, dilation, shear_disp;
   // Force on block a this cycle (block b takes the opposite).
   std::vector<Vec2> force;
   // Interface ranges: contacts of pair p are [pair_begin[p], pair_begin[p+1]).

@@ -1,8 +1,11 @@
 // Joint constitutive laws (chapter 5.2.2): stresses on a contact from its relative displacement.
 //
 // Laws are small classes registered by name; a joint property set names its law and carries the
-// parameters. The normal stress is kn times the overlap (the integral of dsigma_n = kn dun for a
-// constant kn, which cannot drift); the shear stress is incremental, dtau = -ks dus.
+// parameters. Stiffnesses and strengths are per unit length of joint (2D, unit thickness); a law
+// works on the forces of one contact of length L. Both force components are incremental
+// (dFn = kn L dun, dFs = -ks L dus), so a change of L between cycles never makes a force jump and
+// never puts energy into the model. The normal force is held between zero and the total-form
+// value kn L un, so it cannot drift from the overlap.
 #pragma once
 
 #include <cstdint>
@@ -30,9 +33,10 @@ struct JointProperties {
   void finalize();  // derives the tangents and binds the law; throws on an unknown law
 };
 
-// The state one law call reads and writes.
+// The state one law call reads and writes: forces on the owner block (compression positive), the
+// normal displacement of the last call, dilation and total shear displacement, flags.
 struct JointState {
-  double sigma_n = 0.0, tau = 0.0, dilation = 0.0, shear_disp = 0.0;
+  double fn = 0.0, fs = 0.0, un_prev = 0.0, dilation = 0.0, shear_disp = 0.0;
   uint8_t flags = 0;
 };
 
@@ -40,8 +44,10 @@ class JointLaw {
  public:
   virtual ~JointLaw() = default;
   virtual const char* name() const = 0;
-  // overlap: current overlap (negative gap); dus: shear displacement increment of a relative to b.
-  virtual void update(const JointProperties& p, double overlap, double dus, JointState& s) const = 0;
+  // length: the contact's share of joint; overlap: current overlap (negative gap); dus: shear
+  // displacement increment of the owner relative to the other block.
+  virtual void update(const JointProperties& p, double length, double overlap, double dus,
+                      JointState& s) const = 0;
 };
 
 // The law registered under a name, or nullptr.

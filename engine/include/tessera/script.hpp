@@ -104,6 +104,7 @@ class Interpreter {
   void cmd_save(Args&);
   void cmd_restore(Args&);
   void cmd_call(Args&);
+  void cmd_wall(Args&);
 
   // Argument helpers (script.cpp).
   [[noreturn]] void fail(const std::string& message) const;
@@ -113,6 +114,8 @@ class Interpreter {
   bool take(Args& a, const std::string& key, std::string& value) const;
   bool take_num(Args& a, const std::string& key, double& value) const;
   void done(Args& a) const;  // fails on keys no handler used
+  // Fails saying `what` needs `key=`, naming a mistyped key if there is one.
+  [[noreturn]] void missing(const Args& a, const std::string& key, const std::string& what) const;
   std::vector<size_t> select(Args& a, bool allow_words = false);
   std::string resolve(const std::string& path, bool for_reading) const;
   void run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what);

@@ -1,0 +1,64 @@
+#include "support.hpp"
+
+#include <cstring>
+#include <sstream>
+
+namespace tessera::test {
+
+ScriptRun::ScriptRun()
+    : interp(std::make_unique<Interpreter>(dir.path().toStdString(), [](const std::string&) {})) {}
+
+void ScriptRun::run(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) interp->execute(line, "test", ++n);
+}
+
+std::string ScriptRun::path(const std::string& name) const {
+  return dir.path().toStdString() + "/" + name;
+}
+
+std::string incline_script(double psi, double phi, double b, double h) {
+  return "set psi = " + std::to_string(psi) + "\nset phi = " + std::to_string(phi) +
+         "\nset b = " + std::to_string(b) + "\nset h = " + std::to_string(h) +
+         "\nset c = cos(psi)\nset s = sin(psi)\n"
+         "round 0.005\n"
+         "material define rock density=2500\n"
+         "joint define j kn=1e10 ks=1e10 friction=phi\n"
+         "joint assign j\n"
+         "block (-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s) group=base material=rock\n"
+         "block 0,0 b*c,b*s (b*c-h*s),(b*s+h*c) (-h*s),h*c material=rock\n"
+         "fix group=base\n"
+         "gravity 0 -9.81\n";
+}
+
+namespace {
+void mix(uint64_t& h, const void* data, size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+}
+template <class T>
+void mix_vec(uint64_t& h, const std::vector<T>& v) {
+  for (const T& x : v) mix(h, &x, sizeof x);
+}
+}  // namespace
+
+uint64_t state_hash(const Model& m) {
+  uint64_t h = 1469598103934665603ULL;
+  const Blocks& B = m.blocks;
+  for (auto* v : {&B.x, &B.y, &B.theta, &B.vx, &B.vy, &B.omega}) mix_vec(h, *v);
+  const Contacts& C = m.contacts;
+  mix_vec(h, C.fn), mix_vec(h, C.fs), mix_vec(h, C.a), mix_vec(h, C.corner);
+  mix(h, &m.time, sizeof m.time);
+  return h;
+}
+
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (size_t i = 0; i < x.size(); ++i) sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+}  // namespace tessera::test

@@ -1,0 +1,34 @@
+// Helpers shared by the tests: running script text in a temporary folder, hashing state.
+#pragma once
+
+#include <QTemporaryDir>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "tessera/script.hpp"
+
+namespace tessera::test {
+
+// An interpreter writing into its own temporary folder, with progress lines silenced.
+struct ScriptRun {
+  QTemporaryDir dir;
+  std::unique_ptr<Interpreter> interp;
+  ScriptRun();
+  // Runs lines of script text (newline separated); throws ScriptError like a file would.
+  void run(const std::string& text);
+  Model& model() { return interp->model(); }
+  std::string path(const std::string& name) const;
+};
+
+// A b x h block resting on a fixed slab, both turned by psi degrees (the geometry, not gravity,
+// is inclined); friction phi degrees; block 2 is the free block, its vertex 0 the downslope toe.
+std::string incline_script(double psi, double phi, double b = 1.0, double h = 1.0);
+
+// FNV-1a hash of the dynamic state (positions, velocities, contact stresses), bit for bit.
+uint64_t state_hash(const Model& m);
+
+// Slope of the least-squares line through (x, y) samples.
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace tessera::test

@@ -1,0 +1,78 @@
+// Dynamics of the contact springs with damping off: a block bouncing on its base oscillates at
+// sqrt(k/m); two blocks colliding stay in contact for pi sqrt(m_eff/k). The contact springs sit
+// at the rounded corners' arc centres, so a face of width w carries k = kn (w - 2d).
+#include <QtTest>
+#include <cmath>
+
+#include "support.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+const char* kSetup =
+    "round 0.005\n"
+    "material define rock density=2500\n"
+    "joint define j kn=1e10 ks=1e10 friction=30\n"
+    "joint assign j\n"
+    "damping none\n";
+}  // namespace
+
+class TestDynamics : public QObject {
+  Q_OBJECT
+ private slots:
+  void bouncesAtTheSpringFrequency() {
+    ScriptRun r;
+    r.run(std::string(kSetup) +
+          "block -2,-1 3,-1 3,0 -2,0 group=base material=rock\nfix group=base\n"
+          "block 0,0 1,0 1,1 0,1 material=rock\n"
+          "gravity 0 -9.81\ntimestep auto safety=0.1\n");
+    Model& m = r.model();
+    // Times at which the vertical velocity turns from upward to downward (the top of a bounce).
+    std::vector<double> tops;
+    double prev = 0.0;
+    while (tops.size() < 6 && m.cycle < 100000) {
+      r.run("step 1");
+      const double vy = m.blocks.vy[1];
+      if (prev > 0.0 && vy <= 0.0) tops.push_back(m.time - m.dt * vy / (vy - prev));
+      prev = vy;
+    }
+    QVERIFY(tops.size() == 6);
+    const double period = (tops.back() - tops.front()) / 5.0;
+    const double k = 1e10 * (1.0 - 2 * 0.005), mass = 2500.0;
+    const double expected = 2 * M_PI * std::sqrt(mass / k);
+    qInfo("period %.6e s, closed form %.6e s", period, expected);
+    QVERIFY(std::abs(period - expected) < 0.01 * expected);
+  }
+  void collisionLastsHalfAPeriod() {
+    ScriptRun r;
+    r.run(std::string(kSetup) +
+          "block 0,0 1,0 1,1 0,1 material=rock\n"
+          "block 1.001,0 2.001,0 2.001,1 1.001,1 material=rock\n"
+          "velocity block=1 vx=1\nvelocity block=2 vx=-1\n"
+          "timestep auto safety=0.002\n");
+    Model& m = r.model();
+    uint64_t touching = 0;
+    bool was_touching = false, done = false;
+    while (!done && m.cycle < 200000) {
+      r.run("step 1");
+      bool now = false;
+      for (size_t i = 0; i < m.contacts.size(); ++i) now = now || m.contacts.fn[i] > 0.0;
+      touching += now;
+      done = was_touching && !now;
+      was_touching = now;
+    }
+    QVERIFY(done);
+    const double duration = static_cast<double>(touching) * m.dt;
+    const double k = 1e10 * (1.0 - 2 * 0.005), m_eff = 2500.0 / 2;
+    const double expected = M_PI * std::sqrt(m_eff / k);
+    qInfo("contact lasted %.6e s, closed form %.6e s", duration, expected);
+    QVERIFY(std::abs(duration - expected) < 0.02 * expected);
+    // Equal masses, elastic: the velocities are exchanged.
+    QVERIFY(std::abs(m.blocks.vx[0] + 1.0) < 0.02);
+    QVERIFY(std::abs(m.blocks.vx[1] - 1.0) < 0.02);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestDynamics)
+#include "test_dynamics.moc"

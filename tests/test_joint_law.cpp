@@ -1,0 +1,88 @@
+// The Coulomb joint law: stiffness, slip, bond failure in tension and shear, dilation.
+#include <QtTest>
+#include <cmath>
+
+#include "tessera/contacts.hpp"
+#include "tessera/joint_law.hpp"
+
+using namespace tessera;
+
+namespace {
+JointProperties joint(double friction, double cohesion = 0, double tension = 0, double dilation = 0,
+                      double limit = 0) {
+  JointProperties j;
+  j.kn = 1e9, j.ks = 5e8, j.friction = friction, j.cohesion = cohesion, j.tension = tension;
+  j.dilation = dilation, j.dilation_limit = limit;
+  j.finalize();
+  return j;
+}
+}  // namespace
+
+class TestJointLaw : public QObject {
+  Q_OBJECT
+ private slots:
+  void elasticBelowTheLimit() {
+    const auto j = joint(30);
+    JointState s;
+    j.impl->update(j, 1.0, 1e-4, 1e-6, s);  // sigma_n = 1e5, tau = -500
+    QCOMPARE(s.fn, 1e5);
+    QCOMPARE(s.fs, -500.0);
+    QVERIFY(!(s.flags & kSlipping) && (s.flags & kTouching));
+  }
+  void slipsAtTheCoulombLimit() {
+    const auto j = joint(30);
+    JointState s;
+    j.impl->update(j, 1.0, 1e-4, 1e-3, s);
+    QVERIFY(std::abs(s.fs + 1e5 * std::tan(M_PI / 6)) < 1e-6);
+    QVERIFY(s.flags & kSlipping);
+  }
+  void openContactCarriesNothing() {
+    const auto j = joint(30);
+    JointState s;
+    s.fs = 50;
+    s.un_prev = 1e-6;
+    j.impl->update(j, 1.0, -1e-5, 0, s);
+    QCOMPARE(s.fn, 0.0);
+    QCOMPARE(s.fs, 0.0);
+    QVERIFY(!(s.flags & kTouching));
+  }
+  void bondHoldsTensionThenBreaksForGood() {
+    const auto j = joint(30, 0, 2e4);
+    JointState s;
+    s.flags = kBonded;
+    j.impl->update(j, 1.0, -1e-5, 0, s);  // sigma_n = -1e4, inside the strength
+    QCOMPARE(s.fn, -1e4);
+    QVERIFY(s.flags & kBonded);
+    j.impl->update(j, 1.0, -3e-5, 0, s);  // -3e4 beyond the strength
+    QCOMPARE(s.fn, 0.0);
+    QVERIFY(!(s.flags & kBonded) && (s.flags & kBroken));
+    j.impl->update(j, 1.0, -1e-5, 0, s);  // no tension any more
+    QCOMPARE(s.fn, 0.0);
+  }
+  void cohesionIsLostOnShearFailure() {
+    const auto j = joint(30, 1e5);
+    JointState s;
+    s.flags = kBonded;
+    j.impl->update(j, 1.0, 1e-4, 1e-4, s);  // trial tau = -5e4 < c + sigma tan(phi)
+    QCOMPARE(s.fs, -5e4);
+    j.impl->update(j, 1.0, 1e-4, 1e-3, s);  // trial -5.5e5 beyond 1e5 + 5.77e4
+    QVERIFY(!(s.flags & kBonded));
+    QVERIFY(std::abs(s.fs + 1e5 * std::tan(M_PI / 6)) < 1e-6);
+  }
+  void dilationWhileSlippingUpToTheLimit() {
+    const auto j = joint(30, 0, 0, 10, 2e-3);
+    JointState s;
+    for (int i = 0; i < 10; ++i) j.impl->update(j, 1.0, 1e-4, 1e-3, s);
+    // Slips every call; dilation grows only while the shear displacement is under 2 mm (first call).
+    QVERIFY(std::abs(s.dilation - 1e-3 * std::tan(10 * M_PI / 180)) < 1e-12);
+    QVERIFY(std::abs(s.fn - 1e9 * (1e-4 + s.dilation)) < 1e-3);
+  }
+  void unknownLawIsRejected() {
+    JointProperties j;
+    j.law = "nonsense";
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, j.finalize());
+  }
+};
+
+QTEST_APPLESS_MAIN(TestJointLaw)
+#include "test_joint_law.moc"

@@ -1,0 +1,108 @@
+// Bad input gets a message naming the file, the line and the object at fault.
+#include <QtTest>
+#include <fstream>
+
+#include "support.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+const char* kBase =
+    "round 0.01\n"
+    "material define rock density=2600\n"
+    "joint define j kn=1e9 ks=1e9 friction=30\n";
+
+// The message of the ScriptError that running `text` raises, or "" if none.
+std::string error_of(const std::string& text) {
+  ScriptRun r;
+  try {
+    r.run(text);
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+bool has(const std::string& s, const std::string& part) {
+  if (s.find(part) != std::string::npos) return true;
+  qWarning("message was: %s", s.c_str());
+  return false;
+}
+}  // namespace
+
+class TestScriptErrors : public QObject {
+  Q_OBJECT
+ private slots:
+  void unknownCommandSuggests() {
+    const auto e = error_of("round 0.01\nstpe 10");
+    QVERIFY(has(e, "test:2: unknown command 'stpe' (did you mean 'step'?)"));
+  }
+  void unknownKeywordSuggests() {
+    const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
+    QVERIFY(has(e, "test:1:"));
+    QVERIFY(has(e, "'friction'"));
+  }
+  void badNumberIsNamed() {
+    QVERIFY(has(error_of("gravity 0 -9.81x"), "cannot read the number '-9.81x'"));
+    QVERIFY(has(error_of("set a = 2*b"), "'b' is not a defined variable"));
+  }
+  void degenerateBlockIsNamed() {
+    const auto e = error_of(std::string(kBase) + "block 0,0 1,0 2,0 material=rock");
+    QVERIFY(has(e, "test:4: block 1: the polygon has no area"));
+    QVERIFY(has(error_of(std::string(kBase) + "block 0,0 1,1 1,0 0,1"), "cross"));
+  }
+  void missingMaterialIsNamed() {
+    const auto e = error_of(std::string(kBase) + "joint assign j\nblock 0,0 1,0 1,1 0,1\nstep 1");
+    QVERIFY(has(e, "test:6: block 1 has no mass"));
+    QVERIFY(has(error_of(std::string(kBase) + "block 0,0 1,0 1,1 material=granit"),
+                "there is no material 'granit'"));
+  }
+  void overlappingBlocksAreNamed() {
+    const auto e = error_of(std::string(kBase) +
+                            "joint assign j\nblock 0,0 1,0 1,1 0,1 material=rock\n"
+                            "block 0.5,0.5 1.5,0.5 1.5,1.5 0.5,1.5 material=rock\nstep 1");
+    QVERIFY(has(e, "test:7: blocks 1 and 2 overlap"));
+  }
+  void missingJointAssignmentIsNamed() {
+    const auto e = error_of(std::string(kBase) +
+                            "block 0,0 1,0 1,1 0,1 material=rock group=a\n"
+                            "block 0,1 1,1 1,2 0,2 material=rock group=b\nstep 1");
+    QVERIFY(has(e, "no joint properties apply to the contact between block 1 (group a) and block 2 (group b)"));
+  }
+  void divergenceIsReported() {
+    const auto e = error_of(std::string(kBase) +
+                            "joint assign j\nblock 0,0 1,0 1,1 0,1 material=rock\n"
+                            "block 0,1 1,1 1,2 0,2 material=rock\nfix block=1\ngravity 0 -10\n"
+                            "damping none\ntimestep fixed 1\nstep 200");
+    QVERIFY(has(e, "diverged"));
+  }
+  void emptySelectionIsAnError() {
+    const auto e = error_of(std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\nfix x=5,6");
+    QVERIFY(has(e, "test:5: no block matches the selection of 'fix'"));
+  }
+  void errorsInCalledFilesNameThatFile() {
+    QTemporaryDir dir;
+    const std::string inner = dir.path().toStdString() + "/inner.tess";
+    const std::string outer = dir.path().toStdString() + "/outer.tess";
+    std::ofstream(inner) << "round 0.01\n\nmaterial define rock densty=2600\n";
+    std::ofstream(outer) << "; calls a file with a typo\ncall inner.tess\n";
+    Interpreter interp(dir.path().toStdString(), [](const std::string&) {});
+    try {
+      interp.run_file(outer);
+      QFAIL("no error raised");
+    } catch (const ScriptError& e) {
+      QCOMPARE(e.file(), inner);
+      QCOMPARE(e.line(), 3);
+      QVERIFY(has(e.message(), "'densty'"));
+    }
+  }
+  void variablesReachEveryNumber() {
+    ScriptRun r;
+    r.run(std::string(kBase) + "set w = 2*5\nset h = w/10\nblock 0,0 w,0 w,h 0,h material=rock");
+    QCOMPARE(r.model().blocks.area[0], 10.0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestScriptErrors)
+#include "test_script_errors.moc"
