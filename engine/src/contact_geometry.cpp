@@ -24,7 +24,7 @@ inline double circle_chord(double d, double r1, double r2) {
 }  // namespace
 
 bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool corners,
-                     int first, int count, FeatureHit& hit) {
+                     int first, int count, double max_depth, FeatureHit& hit) {
   const uint32_t v0 = B.vert_begin[b];
   const int n = static_cast<int>(B.vertex_count(b));
   const int nf = 2 * n;
@@ -42,12 +42,15 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
       const double len = e.norm();
       const Vec2 u = e / len;
       const double t = (c - p).dot(u);
-      const double lo = B.convex[vk] ? B.round_length[vk] : 0.0;
-      const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0);
+      // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
+      // exactly at a tangent point without a feature.
+      const double slack = 1e-9 * len;
+      const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
+      const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
       if (t < lo || t > hi) continue;
       const Vec2 nrm(u.y(), -u.x());
       const double gap = (c - p).dot(nrm) - r;
-      if (found && std::abs(gap) >= best) continue;
+      if (gap < -max_depth || (found && std::abs(gap) >= best)) continue;
       found = true, best = std::abs(gap);
       hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
       hit.point = c - nrm * (r + 0.5 * gap);
@@ -61,12 +64,13 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
       const Vec2 n_prev = edge_normal(B.world_vertex[vp], B.world_vertex[vk]);
       const Vec2 n_next = edge_normal(B.world_vertex[vk], B.world_vertex[vn]);
       const Vec2 dv = c - B.world_arc_centre[vk];
-      if (cross(n_prev, dv) < 0.0 || cross(dv, n_next) < 0.0) continue;
       const double d = dv.norm();
+      const double slack = 1e-9 * d;
+      if (cross(n_prev, dv) < -slack || cross(dv, n_next) < -slack) continue;
       if (d <= 0.0) continue;
       const double rb = B.arc_radius[vk];
       const double gap = d - r - rb;
-      if (found && std::abs(gap) >= best) continue;
+      if (gap < -max_depth || (found && std::abs(gap) >= best)) continue;
       found = true, best = std::abs(gap);
       hit.kind = kCornerCorner, hit.feature = vk, hit.gap = gap, hit.normal = dv / d;
       hit.point = c - hit.normal * (r + 0.5 * gap);

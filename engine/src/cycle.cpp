@@ -49,7 +49,8 @@ void update_contacts(Model& m) {
       const bool lost = C.kind[i] == kLost;
       const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
       const int count = lost ? 2 * static_cast<int>(B.vertex_count(b)) : 5;
-      if (!nearest_feature(B, b, B.world_arc_centre[v], B.arc_radius[v], a < b, first, count, hit)) {
+      if (!nearest_feature(B, b, B.world_arc_centre[v], B.arc_radius[v], a < b, first, count,
+                           max_contact_depth(B, a, b), hit)) {
         // The corner has left the reach of every feature: it carries nothing until found again.
         C.kind[i] = kLost;
         C.gap[i] = std::numeric_limits<double>::infinity();

@@ -113,7 +113,9 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
         c.y() - r > other_box.y1)
       continue;
     FeatureHit hit;
-    if (!nearest_feature(B, other, c, r, corners, 0, nf, hit) || hit.gap >= reach) continue;
+    if (!nearest_feature(B, other, c, r, corners, 0, nf, max_contact_depth(B, owner, other), hit) ||
+        hit.gap >= reach)
+      continue;
     out.push_back({std::min(owner, other), std::max(owner, other), owner, v, other, hit});
   }
 }

@@ -1,6 +1,7 @@
 // Geometry of a rounded corner against a block (chapter 5.2.2, cases 2 and 3).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "tessera/blocks.hpp"
@@ -20,9 +21,16 @@ struct FeatureHit {
 // Searches the features of block b nearest to the arc (centre c, radius r). Features are
 // numbered 2k (corner k) and 2k+1 (edge from vertex k to k+1), k local to b; the search covers
 // `count` features starting at `first` (modulo the block's feature count). Corners of b are
-// skipped unless `corners` is set. Returns false when no feature has c within its reach.
+// skipped unless `corners` is set; features the arc would overlap by more than `max_depth` are
+// the far side of the block, not a contact, and are skipped. Returns false when no feature has
+// c within its reach.
 bool nearest_feature(const Blocks& blocks, uint32_t b, const Vec2& c, double r, bool corners,
-                     int first, int count, FeatureHit& hit);
+                     int first, int count, double max_depth, FeatureHit& hit);
+
+// Deepest plausible overlap between two blocks: a quarter of the smaller one's size.
+inline double max_contact_depth(const Blocks& blocks, uint32_t a, uint32_t b) {
+  return 0.25 * std::min(blocks.bound_radius[a], blocks.bound_radius[b]);
+}
 
 // Local feature number of a hit, for a later local search around it.
 inline int local_feature(const Blocks& blocks, uint32_t b, uint8_t kind, uint32_t feature) {
