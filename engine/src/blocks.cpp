@@ -28,8 +28,12 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
     arc_radius.push_back(corners[i].radius);
     round_length.push_back(corners[i].length);
     convex.push_back(corners[i].convex ? 1 : 0);
+    const Vec2 e = pts[(i + 1) % pts.size()] - pts[i];
+    local_edge_dir.push_back(e / e.norm());
+    edge_length.push_back(e.norm());
     world_vertex.push_back(pts[i]);
     world_arc_centre.push_back(corners[i].centre);
+    world_edge_dir.push_back(local_edge_dir.back());
   }
   vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
   perimeter.push_back(perim);
@@ -67,8 +71,10 @@ void Blocks::update_world(size_t b) {
   for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v) {
     const Vec2& p = local_vertex[v];
     const Vec2& a = local_arc_centre[v];
+    const Vec2& e = local_edge_dir[v];
     world_vertex[v] = Vec2(bx + c * p.x() - s * p.y(), by + s * p.x() + c * p.y());
     world_arc_centre[v] = Vec2(bx + c * a.x() - s * a.y(), by + s * a.x() + c * a.y());
+    world_edge_dir[v] = Vec2(c * e.x() - s * e.y(), s * e.x() + c * e.y());
   }
 }
 

@@ -8,12 +8,6 @@ namespace tessera {
 
 namespace {
 
-// Outward unit normal of edge k of a counter-clockwise block (vertex indices global).
-inline Vec2 edge_normal(const Vec2& p, const Vec2& q) {
-  const Vec2 u = (q - p).normalized();
-  return {u.y(), -u.x()};
-}
-
 // Chord of two overlapping circles (radius r1, r2, centres D apart).
 inline double circle_chord(double d, double r1, double r2) {
   if (d <= 0.0 || d >= r1 + r2 || d <= std::abs(r1 - r2)) return 0.0;
@@ -21,7 +15,40 @@ inline double circle_chord(double d, double r1, double r2) {
   return k > 0.0 ? std::sqrt(k) / d : 0.0;
 }
 
+// Outward unit normal of the edge starting at global vertex v (counter-clockwise blocks).
+inline Vec2 edge_normal(const Blocks& B, uint32_t v) {
+  const Vec2& u = B.world_edge_dir[v];
+  return {u.y(), -u.x()};
+}
+
 }  // namespace
+
+bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const Vec2& c, double r,
+                  double max_depth, FeatureHit& hit, double* margin) {
+  const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
+  const uint32_t vn = v0 + (vk - v0 + 1) % n;
+  const Vec2& p = B.world_vertex[vk];
+  const Vec2& u = B.world_edge_dir[vk];
+  const double len = B.edge_length[vk];
+  const Vec2 d = c - p;
+  const double t = d.dot(u);
+  // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
+  // exactly at a tangent point without a feature.
+  const double slack = 1e-9 * len;
+  const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
+  const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
+  if (t < lo || t > hi) return false;
+  const Vec2 nrm(u.y(), -u.x());
+  const double s = d.dot(nrm);
+  const double gap = s - r;
+  if (gap < -max_depth) return false;
+  hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
+  hit.point = c - nrm * (r + 0.5 * gap);
+  const double o = -gap;
+  hit.chord = o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
+  if (margin) *margin = std::min(t - lo, hi - t) - 4.0 * std::abs(s);
+  return true;
+}
 
 bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool corners,
                      int first, int count, double max_depth, FeatureHit& hit) {
@@ -30,52 +57,29 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
   const int nf = 2 * n;
   bool found = false;
   double best = 0.0;
+  FeatureHit h;
   for (int s = 0; s < count && s < nf; ++s) {
     const int f = ((first + s) % nf + nf) % nf;
-    const int k = f / 2;
-    const uint32_t vk = v0 + static_cast<uint32_t>(k);
+    const uint32_t vk = v0 + static_cast<uint32_t>(f / 2);
     if (f % 2 == 1) {
-      // Straight part of edge k: between the tangent points of the rounded corners.
-      const uint32_t vn = v0 + static_cast<uint32_t>((k + 1) % n);
-      const Vec2 &p = B.world_vertex[vk], &q = B.world_vertex[vn];
-      const Vec2 e = q - p;
-      const double len = e.norm();
-      const Vec2 u = e / len;
-      const double t = (c - p).dot(u);
-      // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
-      // exactly at a tangent point without a feature.
-      const double slack = 1e-9 * len;
-      const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
-      const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
-      if (t < lo || t > hi) continue;
-      const Vec2 nrm(u.y(), -u.x());
-      const double gap = (c - p).dot(nrm) - r;
-      if (gap < -max_depth || (found && std::abs(gap) >= best)) continue;
-      found = true, best = std::abs(gap);
-      hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
-      hit.point = c - nrm * (r + 0.5 * gap);
-      const double o = -gap;
-      hit.chord = o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
+      if (!edge_feature(B, b, vk, c, r, max_depth, h, nullptr)) continue;
     } else {
-      // Rounded corner k: valid inside the cone of its two edge normals.
+      // Rounded corner: valid inside the cone of its two edge normals.
       if (!corners || !B.convex[vk]) continue;
-      const uint32_t vp = v0 + static_cast<uint32_t>((k + n - 1) % n);
-      const uint32_t vn = v0 + static_cast<uint32_t>((k + 1) % n);
-      const Vec2 n_prev = edge_normal(B.world_vertex[vp], B.world_vertex[vk]);
-      const Vec2 n_next = edge_normal(B.world_vertex[vk], B.world_vertex[vn]);
+      const uint32_t vp = v0 + static_cast<uint32_t>((f / 2 + n - 1) % n);
       const Vec2 dv = c - B.world_arc_centre[vk];
       const double d = dv.norm();
       const double slack = 1e-9 * d;
-      if (cross(n_prev, dv) < -slack || cross(dv, n_next) < -slack) continue;
-      if (d <= 0.0) continue;
+      if (d <= 0.0 || cross(edge_normal(B, vp), dv) < -slack || cross(dv, edge_normal(B, vk)) < -slack)
+        continue;
       const double rb = B.arc_radius[vk];
-      const double gap = d - r - rb;
-      if (gap < -max_depth || (found && std::abs(gap) >= best)) continue;
-      found = true, best = std::abs(gap);
-      hit.kind = kCornerCorner, hit.feature = vk, hit.gap = gap, hit.normal = dv / d;
-      hit.point = c - hit.normal * (r + 0.5 * gap);
-      hit.chord = circle_chord(d, r, rb);
+      h.kind = kCornerCorner, h.feature = vk, h.gap = d - r - rb, h.normal = dv / d;
+      if (h.gap < -max_depth) continue;
+      h.point = c - h.normal * (r + 0.5 * h.gap);
+      h.chord = circle_chord(d, r, rb);
     }
+    if (found && std::abs(h.gap) >= best) continue;
+    found = true, best = std::abs(h.gap), hit = h;
   }
   return found;
 }

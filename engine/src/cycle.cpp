@@ -47,10 +47,18 @@ void update_contacts(Model& m) {
       const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
       FeatureHit hit;
       const bool lost = C.kind[i] == kLost;
+      const Vec2& c = B.world_arc_centre[v];
+      const double r = B.arc_radius[v], depth = max_contact_depth(B, a, b);
+      // Fast path: still well inside the span of the same edge.
+      double margin = -1.0;
+      if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], c, r, depth, hit, &margin) &&
+          margin > 0.0) {
+        C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point, C.chord[i] = hit.chord;
+        continue;
+      }
       const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
       const int count = lost ? 2 * static_cast<int>(B.vertex_count(b)) : 5;
-      if (!nearest_feature(B, b, B.world_arc_centre[v], B.arc_radius[v], a < b, first, count,
-                           max_contact_depth(B, a, b), hit)) {
+      if (!nearest_feature(B, b, c, r, a < b, first, count, depth, hit)) {
         // The corner has left the reach of every feature: it carries nothing until found again.
         C.kind[i] = kLost;
         C.gap[i] = std::numeric_limits<double>::infinity();
@@ -216,7 +224,7 @@ void move_blocks(Model& m) {
       const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
       drift[b] = std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
       // A block that moves a tenth of its size in one step has left explicit dynamics.
-      jump[b] = dt * (std::hypot(B.vx[b], B.vy[b]) + B.bound_radius[b] * std::abs(B.omega[b])) / B.bound_radius[b];
+      jump[b] = dt * (std::sqrt(B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) + B.bound_radius[b] * std::abs(B.omega[b])) / B.bound_radius[b];
     }
   });
   // Convergence measures over the blocks that move under load.

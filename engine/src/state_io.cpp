@@ -14,7 +14,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -98,7 +98,7 @@ void fields(IO& io, auto& m) {
                   &B.round_length, &B.area, &B.perimeter, &B.bound_radius})
     io.vec(*v);
   io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
-  io.vec(B.convex), io.vec(B.world_vertex), io.vec(B.world_arc_centre);
+  io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length);
   io.vec(B.group), io.vec(B.material), io.vec(B.id);
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.kind), io.vec(C.feature), io.vec(C.flags);
@@ -161,6 +161,11 @@ Model restore_state(const std::string& path) {
   Model m;
   fields(r, m);
   for (auto& j : m.joints) j.finalize();
+  // World caches are a pure function of the saved positions.
+  m.blocks.world_vertex.resize(m.blocks.local_vertex.size());
+  m.blocks.world_arc_centre.resize(m.blocks.local_vertex.size());
+  m.blocks.world_edge_dir.resize(m.blocks.local_vertex.size());
+  for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
   build_adjacency(m);
   return m;
 }

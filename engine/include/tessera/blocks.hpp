@@ -39,8 +39,11 @@ struct Blocks {
   std::vector<Vec2> local_vertex, local_arc_centre;
   std::vector<double> arc_radius, round_length;
   std::vector<uint8_t> convex;
-  // Per vertex, world cache refreshed after integration.
-  std::vector<Vec2> world_vertex, world_arc_centre;
+  // Per vertex: unit direction (block frame) and length of the edge that starts there.
+  std::vector<Vec2> local_edge_dir;
+  std::vector<double> edge_length;
+  // Per vertex, world cache refreshed after integration: corner, arc centre, edge direction.
+  std::vector<Vec2> world_vertex, world_arc_centre, world_edge_dir;
   // Per block geometry: area, perimeter, largest centroid-to-vertex distance.
   std::vector<double> area, perimeter, bound_radius;
   // Cold data.

@@ -32,6 +32,13 @@ inline double max_contact_depth(const Blocks& blocks, uint32_t a, uint32_t b) {
   return 0.25 * std::min(blocks.bound_radius[a], blocks.bound_radius[b]);
 }
 
+// The straight part of the edge starting at global vertex vk of block b against the arc; false
+// if the arc centre does not project onto it. `margin`, if given, receives how far inside the
+// span the projection lies beyond four times its distance: when positive, no other feature of
+// the block can be nearer, and the search may stop here.
+bool edge_feature(const Blocks& blocks, uint32_t b, uint32_t vk, const Vec2& c, double r,
+                  double max_depth, FeatureHit& hit, double* margin);
+
 // Local feature number of a hit, for a later local search around it.
 inline int local_feature(const Blocks& blocks, uint32_t b, uint8_t kind, uint32_t feature) {
   return 2 * static_cast<int>(feature - blocks.vert_begin[b]) + (kind == 0 ? 1 : 0);
