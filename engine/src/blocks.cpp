@@ -36,6 +36,8 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
     world_edge_dir.push_back(local_edge_dir.back());
   }
   vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
+  all_convex.push_back(std::all_of(corners.begin(), corners.end(),
+                                   [](const RoundedCorner& c) { return c.convex; }) ? 1 : 0);
   perimeter.push_back(perim);
   bound_radius.push_back(bound);
   mass.push_back(0.0);

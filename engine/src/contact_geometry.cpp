@@ -46,7 +46,8 @@ bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const Vec2& c, doubl
   hit.point = c - nrm * (r + 0.5 * gap);
   const double o = -gap;
   hit.chord = o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
-  if (margin) *margin = std::min(t - lo, hi - t) - 4.0 * std::abs(s);
+  // Outside a convex block, a point over an edge's span is in that edge's Voronoi region.
+  if (margin) *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
   return true;
 }
 

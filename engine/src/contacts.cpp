@@ -5,7 +5,7 @@ namespace tessera {
 void Contacts::clear() {
   a.clear(), b.clear(), corner.clear(), kind.clear(), feature.clear(), flags.clear();
   joint.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(), length.clear();
-  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear();
+  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear(), force_mag.clear();
   pair_begin.assign(1, 0);
 }
 
@@ -17,6 +17,7 @@ void Contacts::push_from(const Contacts& s, size_t i) {
   fn.push_back(s.fn[i]), fs.push_back(s.fs[i]), un_prev.push_back(s.un_prev[i]);
   dilation.push_back(s.dilation[i]);
   shear_disp.push_back(s.shear_disp[i]), force.push_back(s.force[i]);
+  force_mag.push_back(s.force_mag[i]);
 }
 
 void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joint_) {
@@ -27,6 +28,7 @@ void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joi
   fn.push_back(0.0), fs.push_back(0.0), un_prev.push_back(0.0), dilation.push_back(0.0);
   shear_disp.push_back(0.0);
   force.push_back(Vec2::Zero());
+  force_mag.push_back(0.0);
 }
 
 }  // namespace tessera

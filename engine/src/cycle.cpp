@@ -91,7 +91,9 @@ void update_interfaces(Model& m) {
         if (along.empty()) t = perp(C.normal[i]);
         along.emplace_back(C.point[i].dot(t), i);
       }
-      std::sort(along.begin(), along.end());
+      // Insertion sort: an interface has a handful of contacts, mostly in order already.
+      for (size_t j = 1; j < along.size(); ++j)
+        for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q) std::swap(along[q], along[q - 1]);
       // Contacts closer than `merge` along the interface stand at one point (two corners meeting
       // face to face): the point's share is split evenly, so that round-off in their order can
       // never move the length from one to the other.
@@ -123,7 +125,13 @@ void update_interfaces(Model& m) {
           if (C.flags[i] & kBonded) C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
           C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
           C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
-          C.force[i] = Vec2::Zero();
+          C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+          continue;
+        }
+        // Open, unbonded, and open before: nothing to do but remember the opening.
+        const double un = -C.gap[i] + C.dilation[i];
+        if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
+          C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
           continue;
         }
         // Shear displacement increment of a relative to b over the last step.
@@ -136,6 +144,7 @@ void update_interfaces(Model& m) {
         C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
         C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
         C.force[i] = s.fn * n + s.fs * tn;
+        C.force_mag[i] = std::sqrt(s.fn * s.fn + s.fs * s.fs);
       }
     }
   }, 64);
@@ -164,7 +173,7 @@ void move_blocks(Model& m) {
         const Vec2 f = sign * C.force[i];
         fx += f.x(), fy += f.y();
         mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
-        applied += f.norm();
+        applied += C.force_mag[i];
       }
       B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
     }

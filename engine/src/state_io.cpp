@@ -98,14 +98,14 @@ void fields(IO& io, auto& m) {
                   &B.round_length, &B.area, &B.perimeter, &B.bound_radius})
     io.vec(*v);
   io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
-  io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length);
+  io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);
   io.vec(B.group), io.vec(B.material), io.vec(B.id);
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.kind), io.vec(C.feature), io.vec(C.flags);
   io.vec(C.joint), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
   io.vec(C.shear_disp);
-  io.vec(C.force), io.vec(C.pair_begin);
+  io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
   io.pod(count);
   m.materials.resize(count);

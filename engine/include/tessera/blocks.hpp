@@ -44,8 +44,10 @@ struct Blocks {
   std::vector<double> edge_length;
   // Per vertex, world cache refreshed after integration: corner, arc centre, edge direction.
   std::vector<Vec2> world_vertex, world_arc_centre, world_edge_dir;
-  // Per block geometry: area, perimeter, largest centroid-to-vertex distance.
+  // Per block geometry: area, perimeter, largest centroid-to-vertex distance, and whether every
+  // corner is convex.
   std::vector<double> area, perimeter, bound_radius;
+  std::vector<uint8_t> all_convex;
   // Cold data.
   std::vector<int> group, material;
   std::vector<int> id;  // the user's 1-based block number

@@ -33,9 +33,9 @@ inline double max_contact_depth(const Blocks& blocks, uint32_t a, uint32_t b) {
 }
 
 // The straight part of the edge starting at global vertex vk of block b against the arc; false
-// if the arc centre does not project onto it. `margin`, if given, receives how far inside the
-// span the projection lies beyond four times its distance: when positive, no other feature of
-// the block can be nearer, and the search may stop here.
+// if the arc centre does not project onto it. `margin`, if given, is positive when no other
+// feature of the block can be nearer, so that the search may stop here: the arc centre lies
+// outside a convex block (the edge's Voronoi region), or deep inside the span.
 bool edge_feature(const Blocks& blocks, uint32_t b, uint32_t vk, const Vec2& c, double r,
                   double max_depth, FeatureHit& hit, double* margin);
 
