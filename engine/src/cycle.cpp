@@ -144,7 +144,7 @@ void update_interfaces(Model& m) {
         C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
         C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
         C.force[i] = s.fn * n + s.fs * tn;
-        C.force_mag[i] = std::sqrt(s.fn * s.fn + s.fs * s.fs);
+        C.force_mag[i] = std::abs(s.fn) + std::abs(s.fs);
       }
     }
   }, 64);

@@ -49,7 +49,7 @@ struct Contacts {
   // Joint law state: normal and shear force on a (compression positive), the normal
   // displacement of the last cycle, dilation and total shear displacement.
   std::vector<double> fn, fs, un_prev, dilation, shear_disp;
-  // Force on block a this cycle (block b takes the opposite), and its magnitude.
+  // Force on block a this cycle (block b takes the opposite), and |Fn| + |Fs| for the ratio.
   std::vector<Vec2> force;
   std::vector<double> force_mag;
   // Interface ranges: contacts of pair p are [pair_begin[p], pair_begin[p+1]).

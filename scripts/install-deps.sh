@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Tessera builds with (run as root, or with sudo available).
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  cmake ninja-build g++ make \
+  libeigen3-dev libtbb-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
+  qt6-base-dev >/dev/null
+echo "install-deps: done"
