@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "support.hpp"
+#include "tessera/solver.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;
@@ -71,6 +72,39 @@ class TestDynamics : public QObject {
     // Equal masses, elastic: the velocities are exchanged.
     QVERIFY(std::abs(m.blocks.vx[0] + 1.0) < 0.02);
     QVERIFY(std::abs(m.blocks.vx[1] - 1.0) < 0.02);
+  }
+  // Every damping mode comes to the same static answer, the elastic settlement mg / k.
+  void dampingModesReachTheStaticSettlement_data() {
+    QTest::addColumn<QString>("mode");
+    QTest::newRow("local") << "local 0.8";
+    QTest::newRow("adaptive global") << "global 0.5";
+  }
+  void dampingModesReachTheStaticSettlement() {
+    QFETCH(QString, mode);
+    ScriptRun r;
+    r.run(std::string(kSetup) +
+          "block -2,-1 3,-1 3,0 -2,0 group=base material=rock\nfix group=base\n"
+          "block 0,0 1,0 1,1 0,1 material=rock\n"
+          "gravity 0 -9.81\ndamping " + mode.toStdString() + "\nsolve ratio=1e-7 cycles=20000\n");
+    const Model& m = r.model();
+    const double settle = -(m.blocks.y[1] - m.blocks.y_ref[1]);
+    const double expected = 2500 * 9.81 / (1e10 * (1.0 - 2 * 0.005));
+    // At rest: kinetic energy a negligible part of the strain energy m g d / 2.
+    const double strain = 0.5 * 2500 * 9.81 * expected;
+    qInfo("%s: settled %.6e m in %llu cycles, closed form %.6e m; kinetic / strain energy %.2e",
+          qPrintable(mode), settle, static_cast<unsigned long long>(m.cycle), expected,
+          kinetic_energy(m) / strain);
+    QVERIFY(m.ratio <= 1e-7);
+    QVERIFY(std::abs(settle - expected) < 1e-3 * expected);
+    QVERIFY(kinetic_energy(m) < 1e-6 * strain);
+  }
+  // Without damping the same block keeps bouncing: the damping above is what settled it.
+  void undampedBlockDoesNotSettle() {
+    ScriptRun r;
+    r.run(std::string(kSetup) +
+          "block -2,-1 3,-1 3,0 -2,0 group=base material=rock\nfix group=base\n"
+          "block 0,0 1,0 1,1 0,1 material=rock\ngravity 0 -9.81\nstep 5000\n");
+    QVERIFY(r.model().ratio > 1e-3);
   }
 };
 
