@@ -1,7 +1,8 @@
 // tessera-bench: cycles a named scene and prints one JSON line of figures.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <fmt/format.h>
 #include <iostream>
 
 #include "tessera/generators.hpp"
@@ -25,7 +26,8 @@ Model wall_scene(int cols, int rows) {
   m.joints.push_back(j);
   m.joint_table.push_back({-1, -1, 0});
   const double width = 2.0 * cols;
-  m.blocks.add({{-1, -1}, {width + 1, -1}, {width + 1, 0}, {-1, 0}}, m.settings.rounding, 2600, -1, 0);
+  m.blocks.add({{-1, -1}, {width + 1, -1}, {width + 1, 0}, {-1, 0}}, m.settings.rounding, 2600, -1,
+               0);
   m.blocks.fixity[0] = kFixAll;
   WallSpec w;
   w.brick_length = 2.0, w.brick_height = 1.0, w.courses = rows, w.bricks = cols, w.material = 0;
@@ -66,20 +68,23 @@ int main(int argc, char** argv) {
   } else {
     ran = run_cycles(m, cycles);
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double per_cycle = seconds / static_cast<double>(std::max<uint64_t>(ran, 1));
   std::string stages;
   for (int s = 0; s < kStageCount; ++s)
     stages += fmt::format("{}\"{}_ms\": {:.4f}", s ? ", " : "", stage_name(s),
-                          1e3 * profile.seconds[static_cast<size_t>(s)] / static_cast<double>(std::max<uint64_t>(ran, 1)));
-  std::cout << fmt::format(
-                   "{{\"scene\": \"{}\", \"cols\": {}, \"rows\": {}, \"threads\": {}, \"blocks\": {}, "
-                   "\"contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, \"ms_per_cycle\": {:.4f}, "
-                   "\"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": {:.4g}, \"ratio\": {:.3e}, "
-                   "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}}}",
-                   scene, cols, rows, threads, m.blocks.size(), m.contacts.size(), ran, seconds,
-                   1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(m.contacts.size()) / per_cycle,
-                   m.ratio, converged ? "true" : "false", m.detection_passes, stages)
-            << std::endl;
+                          1e3 * profile.seconds[static_cast<size_t>(s)] /
+                              static_cast<double>(std::max<uint64_t>(ran, 1)));
+  std::cout
+      << fmt::format(
+             "{{\"scene\": \"{}\", \"cols\": {}, \"rows\": {}, \"threads\": {}, \"blocks\": {}, "
+             "\"contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, \"ms_per_cycle\": {:.4f}, "
+             "\"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": {:.4g}, \"ratio\": {:.3e}, "
+             "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}}}",
+             scene, cols, rows, threads, m.blocks.size(), m.contacts.size(), ran, seconds,
+             1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(m.contacts.size()) / per_cycle,
+             m.ratio, converged ? "true" : "false", m.detection_passes, stages)
+      << std::endl;
   return 0;
 }

@@ -85,7 +85,8 @@ class TestDynamics : public QObject {
     r.run(std::string(kSetup) +
           "block -2,-1 3,-1 3,0 -2,0 group=base material=rock\nfix group=base\n"
           "block 0,0 1,0 1,1 0,1 material=rock\n"
-          "gravity 0 -9.81\ndamping " + mode.toStdString() + "\nsolve ratio=1e-7 cycles=20000\n");
+          "gravity 0 -9.81\ndamping " +
+          mode.toStdString() + "\nsolve ratio=1e-7 cycles=20000\n");
     const Model& m = r.model();
     const double settle = -(m.blocks.y[1] - m.blocks.y_ref[1]);
     const double expected = 2500 * 9.81 / (1e10 * (1.0 - 2 * 0.005));

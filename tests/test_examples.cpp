@@ -21,8 +21,9 @@ Run run_example(const QString& name, const QStringList& extra, QTemporaryDir& di
   QProcess p;
   Run r;
   r.dir = dir.path() + "/" + name;
-  p.start(TESSERA_EXE, QStringList{"--batch", QString(TESSERA_EXAMPLES) + "/" + name + ".tess",
-                                   "--out", r.dir} + extra);
+  p.start(TESSERA_EXE,
+          QStringList{"--batch", QString(TESSERA_EXAMPLES) + "/" + name + ".tess", "--out", r.dir} +
+              extra);
   p.waitForFinished(600000);
   r.exit_code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
   r.out = p.readAllStandardOutput();
@@ -40,7 +41,8 @@ std::map<std::string, std::vector<double>> read_history(const QString& dir) {
   std::map<std::string, std::vector<double>> cols;
   while (std::getline(in, line)) {
     std::istringstream s(line);
-    for (size_t c = 0; std::getline(s, cell, ',') && c < heads.size(); ++c) cols[heads[c]].push_back(std::stod(cell));
+    for (size_t c = 0; std::getline(s, cell, ',') && c < heads.size(); ++c)
+      cols[heads[c]].push_back(std::stod(cell));
   }
   return cols;
 }
@@ -111,15 +113,18 @@ class TestExamples : public QObject {
     const double cx = 0.25 * std::cos(psi) - 0.5 * std::sin(psi);
     const double cy = 0.25 * std::sin(psi) + 0.5 * std::cos(psi);
     const double pivoted = std::cos(bottom) * cx - std::sin(bottom) * cy - cx;
-    qInfo("at 45 degrees of the top block: bottom block turned %.3f rad, moved %.4f m, "
-          "pivoting on its toe would move it %.4f m", bottom, moved, pivoted);
+    qInfo(
+        "at 45 degrees of the top block: bottom block turned %.3f rad, moved %.4f m, "
+        "pivoting on its toe would move it %.4f m",
+        bottom, moved, pivoted);
     QVERIFY(bottom > 0.3);
     QVERIFY(std::abs(moved - pivoted) < 0.02);
   }
   void badScriptFailsWithItsLine() {
     QTemporaryDir tmp;
     const QString script = tmp.path() + "/bad.tess";
-    std::ofstream(script.toStdString()) << "round 0.01\nmaterial define rock density=2600\nblock 0,0 1,0 1,1 0,1 material=rok\n";
+    std::ofstream(script.toStdString())
+        << "round 0.01\nmaterial define rock density=2600\nblock 0,0 1,0 1,1 0,1 material=rok\n";
     QProcess p;
     p.start(TESSERA_EXE, {"--batch", script, "--out", tmp.path() + "/out"});
     p.waitForFinished(60000);

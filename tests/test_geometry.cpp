@@ -36,7 +36,8 @@ class TestGeometry : public QObject {
   }
   void problemsAreNamed() {
     QVERIFY(polygon_problem({{0, 0}, {1, 0}}).find("at least 3") != std::string::npos);
-    QVERIFY(polygon_problem({{0, 0}, {1, 0}, {1, 0}, {0, 1}}).find("coincide") != std::string::npos);
+    QVERIFY(polygon_problem({{0, 0}, {1, 0}, {1, 0}, {0, 1}}).find("coincide") !=
+            std::string::npos);
     QVERIFY(polygon_problem({{0, 0}, {1, 1}, {1, 0}, {0, 1}}).find("cross") != std::string::npos);
     QVERIFY(polygon_problem({{0, 0}, {1, 0}, {2, 0}}).find("no area") != std::string::npos);
     QVERIFY(polygon_problem({{0, 0}, {1, 0}, {1, 1}, {0, 1}}).empty());

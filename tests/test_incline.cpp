@@ -35,7 +35,8 @@ class TestIncline : public QObject {
     std::vector<double> t, v;
     while (m.time < 1.0) {
       r.run("step 20");
-      if (m.time > 0.2) t.push_back(m.time), v.push_back(-(m.blocks.vx[1] * c + m.blocks.vy[1] * s));
+      if (m.time > 0.2)
+        t.push_back(m.time), v.push_back(-(m.blocks.vx[1] * c + m.blocks.vy[1] * s));
     }
     const double a = tessera::test::fitted_slope(t, v);
     const double expected = 9.81 * (s - c * std::tan(phi * kDeg));

@@ -73,7 +73,8 @@ class TestJointLaw : public QObject {
     const auto j = joint(30, 0, 0, 10, 2e-3);
     JointState s;
     for (int i = 0; i < 10; ++i) j.impl->update(j, 1.0, 1e-4, 1e-3, s);
-    // Slips every call; dilation grows only while the shear displacement is under 2 mm (first call).
+    // Slips every call; dilation grows only while the shear displacement is under 2 mm (first
+    // call).
     QVERIFY(std::abs(s.dilation - 1e-3 * std::tan(10 * M_PI / 180)) < 1e-12);
     QVERIFY(std::abs(s.fn - 1e9 * (1e-4 + s.dilation)) < 1e-3);
   }

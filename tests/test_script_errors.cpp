@@ -68,7 +68,9 @@ class TestScriptErrors : public QObject {
     const auto e = error_of(std::string(kBase) +
                             "block 0,0 1,0 1,1 0,1 material=rock group=a\n"
                             "block 0,1 1,1 1,2 0,2 material=rock group=b\nstep 1");
-    QVERIFY(has(e, "no joint properties apply to the contact between block 1 (group a) and block 2 (group b)"));
+    QVERIFY(has(e,
+                "no joint properties apply to the contact between block 1 (group a) and block 2 "
+                "(group b)"));
   }
   void divergenceIsReported() {
     const auto e = error_of(std::string(kBase) +

@@ -13,8 +13,8 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
   x.push_back(props.centroid.x());
   y.push_back(props.centroid.y());
   theta.push_back(0.0);
-  for (auto* v : {&vx, &vy, &omega, &fx, &fy, &moment, &applied, &fixed_vx, &fixed_vy,
-                  &fixed_omega})
+  for (auto* v :
+       {&vx, &vy, &omega, &fx, &fy, &moment, &applied, &fixed_vx, &fixed_vy, &fixed_omega})
     v->push_back(0.0);
   x_ref.push_back(props.centroid.x());
   y_ref.push_back(props.centroid.y());
@@ -36,8 +36,10 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
     world_edge_dir.push_back(local_edge_dir.back());
   }
   vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
-  all_convex.push_back(std::all_of(corners.begin(), corners.end(),
-                                   [](const RoundedCorner& c) { return c.convex; }) ? 1 : 0);
+  all_convex.push_back(
+      std::all_of(corners.begin(), corners.end(), [](const RoundedCorner& c) { return c.convex; })
+          ? 1
+          : 0);
   perimeter.push_back(perim);
   bound_radius.push_back(bound);
   mass.push_back(0.0);

@@ -12,18 +12,30 @@ namespace tessera {
 
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
   static const std::map<std::string, Handler> h{
-      {"title", &Interpreter::cmd_title},       {"set", &Interpreter::cmd_set},
-      {"print", &Interpreter::cmd_print},       {"round", &Interpreter::cmd_round},
-      {"tolerance", &Interpreter::cmd_tolerance}, {"threads", &Interpreter::cmd_threads},
-      {"material", &Interpreter::cmd_material}, {"joint", &Interpreter::cmd_joint},
-      {"block", &Interpreter::cmd_block},       {"group", &Interpreter::cmd_group},
-      {"fix", &Interpreter::cmd_fix},           {"free", &Interpreter::cmd_free},
-      {"velocity", &Interpreter::cmd_velocity}, {"gravity", &Interpreter::cmd_gravity},
-      {"damping", &Interpreter::cmd_damping},   {"timestep", &Interpreter::cmd_timestep},
-      {"step", &Interpreter::cmd_step},         {"solve", &Interpreter::cmd_solve},
-      {"history", &Interpreter::cmd_history},   {"vtk", &Interpreter::cmd_vtk},
-      {"save", &Interpreter::cmd_save},         {"restore", &Interpreter::cmd_restore},
-      {"call", &Interpreter::cmd_call},         {"wall", &Interpreter::cmd_wall},
+      {"title", &Interpreter::cmd_title},
+      {"set", &Interpreter::cmd_set},
+      {"print", &Interpreter::cmd_print},
+      {"round", &Interpreter::cmd_round},
+      {"tolerance", &Interpreter::cmd_tolerance},
+      {"threads", &Interpreter::cmd_threads},
+      {"material", &Interpreter::cmd_material},
+      {"joint", &Interpreter::cmd_joint},
+      {"block", &Interpreter::cmd_block},
+      {"group", &Interpreter::cmd_group},
+      {"fix", &Interpreter::cmd_fix},
+      {"free", &Interpreter::cmd_free},
+      {"velocity", &Interpreter::cmd_velocity},
+      {"gravity", &Interpreter::cmd_gravity},
+      {"damping", &Interpreter::cmd_damping},
+      {"timestep", &Interpreter::cmd_timestep},
+      {"step", &Interpreter::cmd_step},
+      {"solve", &Interpreter::cmd_solve},
+      {"history", &Interpreter::cmd_history},
+      {"vtk", &Interpreter::cmd_vtk},
+      {"save", &Interpreter::cmd_save},
+      {"restore", &Interpreter::cmd_restore},
+      {"call", &Interpreter::cmd_call},
+      {"wall", &Interpreter::cmd_wall},
   };
   return h;
 }
@@ -41,7 +53,8 @@ void Interpreter::cmd_set(Args& a) {
     fail("write 'set NAME = EXPRESSION' (with spaces around '=')");
   const std::string& name = a.words[0];
   if (!std::isalpha(static_cast<unsigned char>(name[0])) ||
-      !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
+      !std::all_of(name.begin(), name.end(),
+                   [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
     fail("'" + name + "' is not a variable name (letters, digits and _, starting with a letter)");
   std::string expr;
   for (size_t i = 2; i < a.words.size(); ++i) expr += a.words[i] + " ";
@@ -96,7 +109,8 @@ void Interpreter::cmd_threads(Args& a) {
 }
 
 void Interpreter::cmd_material(Args& a) {
-  if (a.words.size() < 2) fail("write 'material define NAME density=RHO' or 'material assign NAME <blocks>'");
+  if (a.words.size() < 2)
+    fail("write 'material define NAME density=RHO' or 'material assign NAME <blocks>'");
   const std::string verb = a.words[0], name = a.words[1];
   a.words.erase(a.words.begin(), a.words.begin() + 2);
   if (verb == "define") {
@@ -105,7 +119,8 @@ void Interpreter::cmd_material(Args& a) {
     if (rho <= 0.0) fail("the density of material '" + name + "' must be positive");
     done(a);
     int k = model_.material_index(name);
-    if (k < 0) model_.materials.push_back({name, rho}), k = static_cast<int>(model_.materials.size()) - 1;
+    if (k < 0)
+      model_.materials.push_back({name, rho}), k = static_cast<int>(model_.materials.size()) - 1;
     model_.materials[static_cast<size_t>(k)].density = rho;
     for (size_t b = 0; b < model_.blocks.size(); ++b)
       if (model_.blocks.material[b] == k) model_.blocks.set_density(b, rho);
@@ -130,7 +145,8 @@ void Interpreter::cmd_material(Args& a) {
 }
 
 void Interpreter::cmd_joint(Args& a) {
-  if (a.words.size() < 2) fail("write 'joint define NAME kn=.. ks=.. friction=..' or 'joint assign NAME'");
+  if (a.words.size() < 2)
+    fail("write 'joint define NAME kn=.. ks=.. friction=..' or 'joint assign NAME'");
   const std::string verb = a.words[0], name = a.words[1];
   if (a.words.size() > 2) fail("unexpected word '" + a.words[2] + "'");
   if (verb == "define") {
@@ -152,21 +168,27 @@ void Interpreter::cmd_joint(Args& a) {
     take(a, "law", j.law);
     done(a);
     if (j.kn <= 0.0 || j.ks <= 0.0) fail("joint '" + name + "': kn and ks must be positive");
-    if (j.friction < 0.0 || j.friction >= 90.0) fail("joint '" + name + "': friction must be in [0, 90) degrees");
-    if (j.dilation < 0.0 || j.dilation >= 90.0) fail("joint '" + name + "': dilation must be in [0, 90) degrees");
+    if (j.friction < 0.0 || j.friction >= 90.0)
+      fail("joint '" + name + "': friction must be in [0, 90) degrees");
+    if (j.dilation < 0.0 || j.dilation >= 90.0)
+      fail("joint '" + name + "': dilation must be in [0, 90) degrees");
     if (j.cohesion < 0.0 || j.tension < 0.0 || j.dilation_limit < 0.0)
       fail("joint '" + name + "': cohesion, tension and dilation_limit cannot be negative");
-    if (!find_joint_law(j.law)) fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
+    if (!find_joint_law(j.law))
+      fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
     j.finalize();
-    if (fresh) model_.joints.push_back(j);
-    else model_.joints[static_cast<size_t>(existing)] = j;
+    if (fresh)
+      model_.joints.push_back(j);
+    else
+      model_.joints[static_cast<size_t>(existing)] = j;
     model_.dt_dirty = true;
   } else if (verb == "assign") {
     const int k = model_.joint_index(name);
     if (k < 0) {
       std::vector<std::string> names;
       for (const auto& j : model_.joints) names.push_back(j.name);
-      fail("there is no joint '" + name + "' (define it first with 'joint define')" + suggest(name, names));
+      fail("there is no joint '" + name + "' (define it first with 'joint define')" +
+           suggest(name, names));
     }
     JointAssignment ja;
     ja.joint = static_cast<uint32_t>(k);
@@ -178,7 +200,8 @@ void Interpreter::cmd_joint(Args& a) {
       ja.group_b = model_.group_index(g[1], false);
       for (int i = 0; i < 2; ++i)
         if ((i ? ja.group_b : ja.group_a) < 0)
-          fail("there is no group '" + g[static_cast<size_t>(i)] + "'" + suggest(g[static_cast<size_t>(i)], model_.groups));
+          fail("there is no group '" + g[static_cast<size_t>(i)] + "'" +
+               suggest(g[static_cast<size_t>(i)], model_.groups));
     }
     done(a);
     model_.joint_table.push_back(ja);
@@ -194,7 +217,8 @@ void Interpreter::cmd_joint(Args& a) {
 }
 
 void Interpreter::cmd_block(Args& a) {
-  if (model_.settings.rounding <= 0.0) fail("set the rounding length with 'round D' before the first block");
+  if (model_.settings.rounding <= 0.0)
+    fail("set the rounding length with 'round D' before the first block");
   std::vector<Vec2> pts;
   for (const auto& w : a.words) pts.push_back(point(w));
   const std::string which = "block " + std::to_string(model_.blocks.size() + 1);
@@ -219,7 +243,8 @@ void Interpreter::cmd_block(Args& a) {
 }
 
 void Interpreter::cmd_wall(Args& a) {
-  if (model_.settings.rounding <= 0.0) fail("set the rounding length with 'round D' before the first block");
+  if (model_.settings.rounding <= 0.0)
+    fail("set the rounding length with 'round D' before the first block");
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   WallSpec w;
   std::string v;
@@ -255,13 +280,18 @@ void Interpreter::cmd_group(Args& a) {
 
 namespace {
 // Fixity bits named by the words x, y, rotation (all three when none is named).
-uint8_t fixity_words(std::vector<std::string>& words, const std::function<void(const std::string&)>& fail) {
+uint8_t fixity_words(std::vector<std::string>& words,
+                     const std::function<void(const std::string&)>& fail) {
   uint8_t bits = 0;
   for (const auto& w : words) {
-    if (w == "x") bits |= kFixX;
-    else if (w == "y") bits |= kFixY;
-    else if (w == "rotation") bits |= kFixRot;
-    else fail("'" + w + "' is not a degree of freedom (x, y or rotation)");
+    if (w == "x")
+      bits |= kFixX;
+    else if (w == "y")
+      bits |= kFixY;
+    else if (w == "rotation")
+      bits |= kFixRot;
+    else
+      fail("'" + w + "' is not a degree of freedom (x, y or rotation)");
   }
   return bits ? bits : static_cast<uint8_t>(kFixAll);
 }
@@ -309,7 +339,8 @@ void Interpreter::cmd_gravity(Args& a) {
 }
 
 void Interpreter::cmd_damping(Args& a) {
-  if (a.words.empty()) fail("write 'damping local [ALPHA]', 'damping global [RATIO]' or 'damping none'");
+  if (a.words.empty())
+    fail("write 'damping local [ALPHA]', 'damping global [RATIO]' or 'damping none'");
   Settings& s = model_.settings;
   const std::string& mode = a.words[0];
   if (a.words.size() > 2) fail("unexpected word '" + a.words[2] + "'");
@@ -321,7 +352,8 @@ void Interpreter::cmd_damping(Args& a) {
   } else if (mode == "global") {
     s.damping = DampingMode::kAdaptiveGlobal;
     if (has) s.global_ratio = num(a.words[1]);
-    if (s.global_ratio <= 0.0 || s.global_ratio >= 1.0) fail("the global damping ratio must be in (0, 1)");
+    if (s.global_ratio <= 0.0 || s.global_ratio >= 1.0)
+      fail("the global damping ratio must be in (0, 1)");
   } else if (mode == "none") {
     if (has) fail("'damping none' takes no value");
     s.damping = DampingMode::kNone;
@@ -337,7 +369,8 @@ void Interpreter::cmd_timestep(Args& a) {
     if (a.words.size() > 1) fail("unexpected word '" + a.words[1] + "'");
     take_num(a, "safety", s.dt_safety);
     done(a);
-    if (s.dt_safety <= 0.0 || s.dt_safety > 1.0) fail("the time step safety factor must be in (0, 1]");
+    if (s.dt_safety <= 0.0 || s.dt_safety > 1.0)
+      fail("the time step safety factor must be in (0, 1]");
     s.dt_fixed = 0.0;
   } else if (a.words[0] == "fixed") {
     if (a.words.size() != 2) fail("write 'timestep fixed DT'");

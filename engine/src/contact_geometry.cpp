@@ -47,12 +47,13 @@ bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const Vec2& c, doubl
   const double o = -gap;
   hit.chord = o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
   // Outside a convex block, a point over an edge's span is in that edge's Voronoi region.
-  if (margin) *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
+  if (margin)
+    *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
   return true;
 }
 
-bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool corners,
-                     int first, int count, double max_depth, FeatureHit& hit) {
+bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool corners, int first,
+                     int count, double max_depth, FeatureHit& hit) {
   const uint32_t v0 = B.vert_begin[b];
   const int n = static_cast<int>(B.vertex_count(b));
   const int nf = 2 * n;
@@ -71,7 +72,8 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
       const Vec2 dv = c - B.world_arc_centre[vk];
       const double d = dv.norm();
       const double slack = 1e-9 * d;
-      if (d <= 0.0 || cross(edge_normal(B, vp), dv) < -slack || cross(dv, edge_normal(B, vk)) < -slack)
+      if (d <= 0.0 || cross(edge_normal(B, vp), dv) < -slack ||
+          cross(dv, edge_normal(B, vk)) < -slack)
         continue;
       const double rb = B.arc_radius[vk];
       h.kind = kCornerCorner, h.feature = vk, h.gap = d - r - rb, h.normal = dv / d;

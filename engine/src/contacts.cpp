@@ -5,7 +5,8 @@ namespace tessera {
 void Contacts::clear() {
   a.clear(), b.clear(), corner.clear(), kind.clear(), feature.clear(), flags.clear();
   joint.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(), length.clear();
-  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear(), force_mag.clear();
+  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear(),
+      force_mag.clear();
   pair_begin.assign(1, 0);
 }
 

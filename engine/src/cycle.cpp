@@ -53,7 +53,8 @@ void update_contacts(Model& m) {
       double margin = -1.0;
       if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], c, r, depth, hit, &margin) &&
           margin > 0.0) {
-        C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point, C.chord[i] = hit.chord;
+        C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point,
+        C.chord[i] = hit.chord;
         continue;
       }
       const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
@@ -79,79 +80,91 @@ void update_interfaces(Model& m) {
   Contacts& C = m.contacts;
   const double dt = m.dt;
   const double merge = 0.25 * m.settings.rounding;
-  parallel_for(C.pair_count(), [&](size_t p0, size_t p1) {
-    std::vector<std::pair<double, uint32_t>> along;
-    for (size_t p = p0; p < p1; ++p) {
-      const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
-      along.clear();
-      Vec2 t = Vec2::Zero();
-      for (uint32_t i = c0; i < c1; ++i) {
-        C.length[i] = 0.0;
-        if (C.kind[i] == kLost) continue;
-        if (along.empty()) t = perp(C.normal[i]);
-        along.emplace_back(C.point[i].dot(t), i);
-      }
-      // Insertion sort: an interface has a handful of contacts, mostly in order already.
-      for (size_t j = 1; j < along.size(); ++j)
-        for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q) std::swap(along[q], along[q - 1]);
-      // Contacts closer than `merge` along the interface stand at one point (two corners meeting
-      // face to face): the point's share is split evenly, so that round-off in their order can
-      // never move the length from one to the other.
-      const size_t k = along.size();
-      size_t g0 = 0;
-      double prev_centre = 0.0;
-      while (g0 < k) {
-        size_t g1 = g0 + 1;
-        while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) ++g1;
-        double centre = 0.0;
-        for (size_t j = g0; j < g1; ++j) centre += along[j].first;
-        centre /= static_cast<double>(g1 - g0);
-        double next_centre = centre;
-        if (g1 < k) {
-          size_t g2 = g1 + 1;
-          while (g2 < k && along[g2].first - along[g2 - 1].first <= merge) ++g2;
-          next_centre = 0.0;
-          for (size_t j = g1; j < g2; ++j) next_centre += along[j].first;
-          next_centre /= static_cast<double>(g2 - g1);
+  parallel_for(
+      C.pair_count(),
+      [&](size_t p0, size_t p1) {
+        std::vector<std::pair<double, uint32_t>> along;
+        for (size_t p = p0; p < p1; ++p) {
+          const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
+          along.clear();
+          Vec2 t = Vec2::Zero();
+          for (uint32_t i = c0; i < c1; ++i) {
+            C.length[i] = 0.0;
+            if (C.kind[i] == kLost) continue;
+            if (along.empty()) t = perp(C.normal[i]);
+            along.emplace_back(C.point[i].dot(t), i);
+          }
+          // Insertion sort: an interface has a handful of contacts, mostly in order already.
+          for (size_t j = 1; j < along.size(); ++j)
+            for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q)
+              std::swap(along[q], along[q - 1]);
+          // Contacts closer than `merge` along the interface stand at one point (two corners
+          // meeting face to face): the point's share is split evenly, so that round-off in their
+          // order can never move the length from one to the other.
+          const size_t k = along.size();
+          size_t g0 = 0;
+          double prev_centre = 0.0;
+          while (g0 < k) {
+            size_t g1 = g0 + 1;
+            while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) ++g1;
+            double centre = 0.0;
+            for (size_t j = g0; j < g1; ++j) centre += along[j].first;
+            centre /= static_cast<double>(g1 - g0);
+            double next_centre = centre;
+            if (g1 < k) {
+              size_t g2 = g1 + 1;
+              while (g2 < k && along[g2].first - along[g2 - 1].first <= merge) ++g2;
+              next_centre = 0.0;
+              for (size_t j = g1; j < g2; ++j) next_centre += along[j].first;
+              next_centre /= static_cast<double>(g2 - g1);
+            }
+            const double len =
+                0.5 * ((g0 > 0 ? centre - prev_centre : 0.0) + (next_centre - centre));
+            for (size_t j = g0; j < g1; ++j)
+              C.length[along[j].second] =
+                  std::max(len / static_cast<double>(g1 - g0), C.chord[along[j].second]);
+            prev_centre = centre;
+            g0 = g1;
+          }
+          for (uint32_t i = c0; i < c1; ++i) {
+            if (C.kind[i] == kLost) {
+              if (C.flags[i] & kBonded)
+                C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
+              C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
+              C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
+              C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+              continue;
+            }
+            // Open, unbonded, and open before: nothing to do but remember the opening.
+            const double un = -C.gap[i] + C.dilation[i];
+            if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
+              C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+              continue;
+            }
+            // Shear displacement increment of a relative to b over the last step.
+            const Vec2 n = C.normal[i], tn = perp(n);
+            const double dus =
+                (point_velocity(B, C.a[i], C.point[i]) - point_velocity(B, C.b[i], C.point[i]))
+                    .dot(tn) *
+                dt;
+            JointState s{C.fn[i],       C.fs[i],         C.un_prev[i],
+                         C.dilation[i], C.shear_disp[i], C.flags[i]};
+            const JointProperties& jp = m.joints[C.joint[i]];
+            jp.impl->update(jp, C.length[i], -C.gap[i], dus, s);
+            C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
+            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
+            C.force[i] = s.fn * n + s.fs * tn;
+            C.force_mag[i] = std::abs(s.fn) + std::abs(s.fs);
+          }
         }
-        const double len = 0.5 * ((g0 > 0 ? centre - prev_centre : 0.0) + (next_centre - centre));
-        for (size_t j = g0; j < g1; ++j)
-          C.length[along[j].second] = std::max(len / static_cast<double>(g1 - g0), C.chord[along[j].second]);
-        prev_centre = centre;
-        g0 = g1;
-      }
-      for (uint32_t i = c0; i < c1; ++i) {
-        if (C.kind[i] == kLost) {
-          if (C.flags[i] & kBonded) C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
-          C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
-          C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
-          C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
-          continue;
-        }
-        // Open, unbonded, and open before: nothing to do but remember the opening.
-        const double un = -C.gap[i] + C.dilation[i];
-        if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
-          C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
-          continue;
-        }
-        // Shear displacement increment of a relative to b over the last step.
-        const Vec2 n = C.normal[i], tn = perp(n);
-        const double dus =
-            (point_velocity(B, C.a[i], C.point[i]) - point_velocity(B, C.b[i], C.point[i])).dot(tn) * dt;
-        JointState s{C.fn[i], C.fs[i], C.un_prev[i], C.dilation[i], C.shear_disp[i], C.flags[i]};
-        const JointProperties& jp = m.joints[C.joint[i]];
-        jp.impl->update(jp, C.length[i], -C.gap[i], dus, s);
-        C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
-        C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
-        C.force[i] = s.fn * n + s.fs * tn;
-        C.force_mag[i] = std::abs(s.fn) + std::abs(s.fs);
-      }
-    }
-  }, 64);
+      },
+      64);
 }
 
 // Sign of a velocity component for local damping (zero at rest).
-inline double sgn(double v) { return (v > 0.0) - (v < 0.0); }
+inline double sgn(double v) {
+  return (v > 0.0) - (v < 0.0);
+}
 
 // Resultants, damping and central-difference integration of every block.
 void move_blocks(Model& m) {
@@ -200,7 +213,8 @@ void move_blocks(Model& m) {
     });
     if (kin2 > 0.0) {
       const double target = S.global_ratio * power / kin2;
-      m.global_c = m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
+      m.global_c =
+          m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
     }
   }
   const double c_glob = S.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
@@ -210,7 +224,8 @@ void move_blocks(Model& m) {
     for (size_t b = b0; b < b1; ++b) {
       const uint8_t fix = B.fixity[b];
       double ub2 = 0.0;
-      auto advance = [&](double f, double& v, double inv_m, double mass, bool fixed, double v_fixed) {
+      auto advance = [&](double f, double& v, double inv_m, double mass, bool fixed,
+                         double v_fixed) {
         if (fixed || inv_m == 0.0) {
           v = fixed ? v_fixed : 0.0;
           return;
@@ -231,9 +246,13 @@ void move_blocks(Model& m) {
       B.update_world(b);
       // Largest vertex displacement since the last detection pass.
       const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
-      drift[b] = std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
+      drift[b] =
+          std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
       // A block that moves a tenth of its size in one step has left explicit dynamics.
-      jump[b] = dt * (std::sqrt(B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) + B.bound_radius[b] * std::abs(B.omega[b])) / B.bound_radius[b];
+      jump[b] = dt *
+                (std::sqrt(B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
+                 B.bound_radius[b] * std::abs(B.omega[b])) /
+                B.bound_radius[b];
     }
   });
   // Convergence measures over the blocks that move under load.
@@ -285,7 +304,8 @@ double compute_timestep(const Model& m) {
     const double k = kmax * B.perimeter[b];
     if (B.inv_mass[b] > 0.0) dt = std::min(dt, 2.0 * std::sqrt(B.mass[b] / k));
     if (B.inv_inertia[b] > 0.0)
-      dt = std::min(dt, 2.0 * std::sqrt(B.inertia[b] / (k * B.bound_radius[b] * B.bound_radius[b])));
+      dt =
+          std::min(dt, 2.0 * std::sqrt(B.inertia[b] / (k * B.bound_radius[b] * B.bound_radius[b])));
   }
   if (!std::isfinite(dt)) return 1e-3;
   return m.settings.dt_safety * dt;
@@ -334,8 +354,9 @@ void cycle(Model& m) {
 double kinetic_energy(const Model& m) {
   const Blocks& B = m.blocks;
   return 0.5 * deterministic_sum(B.size(), [&](size_t b) {
-    return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) + B.inertia[b] * B.omega[b] * B.omega[b];
-  });
+           return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
+                  B.inertia[b] * B.omega[b] * B.omega[b];
+         });
 }
 
 uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t every) {

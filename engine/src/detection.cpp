@@ -38,7 +38,7 @@ std::vector<Box> block_boxes(const Blocks& B, double grow) {
 // Candidate pairs (lo, hi) whose boxes overlap, sorted. Blocks go into the cells of a uniform
 // grid sized by the median block; a block covering many cells is tested against all others.
 std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& boxes,
-                                                      const std::vector<uint8_t>& fixed) {
+                                                       const std::vector<uint8_t>& fixed) {
   const size_t n = boxes.size();
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
   if (n < 2) return pairs;
@@ -154,7 +154,8 @@ void detect_contacts(Model& m) {
       const int joint = m.joint_for(f.owner, f.other);
       if (joint < 0) {
         const auto group_name = [&](uint32_t b) {
-          return B.group[b] >= 0 ? m.groups[static_cast<size_t>(B.group[b])] : std::string("(none)");
+          return B.group[b] >= 0 ? m.groups[static_cast<size_t>(B.group[b])]
+                                 : std::string("(none)");
         };
         throw ModelError("no joint properties apply to the contact between block " +
                          std::to_string(B.id[f.owner]) + " (group " + group_name(f.owner) +

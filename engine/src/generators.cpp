@@ -14,7 +14,8 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
     if (c % 2) xs.push_back(width);
     for (size_t k = 0; k + 1 < xs.size(); ++k) {
       const double x0 = w.origin.x() + xs[k], x1 = w.origin.x() + xs[k + 1];
-      m.blocks.add({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, m.settings.rounding, rho, w.group, w.material);
+      m.blocks.add({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, m.settings.rounding, rho, w.group,
+                   w.material);
       ++added;
     }
   }

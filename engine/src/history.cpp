@@ -57,19 +57,32 @@ double history_value(const Model& m, const HistorySeries& s) {
   const Blocks& B = m.blocks;
   const auto b = static_cast<size_t>(std::max(0, s.block));
   switch (s.quantity) {
-    case HistoryQuantity::kXDisp: return B.x[b] - B.x_ref[b];
-    case HistoryQuantity::kYDisp: return B.y[b] - B.y_ref[b];
-    case HistoryQuantity::kXVel: return B.vx[b];
-    case HistoryQuantity::kYVel: return B.vy[b];
-    case HistoryQuantity::kRotation: return B.theta[b];
-    case HistoryQuantity::kAngVel: return B.omega[b];
-    case HistoryQuantity::kXPos: return B.x[b];
-    case HistoryQuantity::kYPos: return B.y[b];
-    case HistoryQuantity::kRatio: return m.ratio;
-    case HistoryQuantity::kUnbalanced: return m.max_unbalanced;
-    case HistoryQuantity::kKinetic: return kinetic_energy(m);
-    case HistoryQuantity::kTime: return m.time;
-    case HistoryQuantity::kTimestep: return m.dt;
+    case HistoryQuantity::kXDisp:
+      return B.x[b] - B.x_ref[b];
+    case HistoryQuantity::kYDisp:
+      return B.y[b] - B.y_ref[b];
+    case HistoryQuantity::kXVel:
+      return B.vx[b];
+    case HistoryQuantity::kYVel:
+      return B.vy[b];
+    case HistoryQuantity::kRotation:
+      return B.theta[b];
+    case HistoryQuantity::kAngVel:
+      return B.omega[b];
+    case HistoryQuantity::kXPos:
+      return B.x[b];
+    case HistoryQuantity::kYPos:
+      return B.y[b];
+    case HistoryQuantity::kRatio:
+      return m.ratio;
+    case HistoryQuantity::kUnbalanced:
+      return m.max_unbalanced;
+    case HistoryQuantity::kKinetic:
+      return kinetic_energy(m);
+    case HistoryQuantity::kTime:
+      return m.time;
+    case HistoryQuantity::kTimestep:
+      return m.dt;
   }
   return 0.0;
 }

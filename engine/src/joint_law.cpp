@@ -32,8 +32,10 @@ class CoulombLaw final : public JointLaw {
     // Incremental normal force, held between zero (or the bond) and the total-form value.
     const double kn = p.kn * L, total = kn * un;
     const double trial = s.fn + kn * dun;
-    if (!bonded) s.fn = std::clamp(trial, 0.0, total);
-    else s.fn = un >= 0.0 ? std::min(trial, total) : std::max(trial, total);
+    if (!bonded)
+      s.fn = std::clamp(trial, 0.0, total);
+    else
+      s.fn = un >= 0.0 ? std::min(trial, total) : std::max(trial, total);
     // Tensile failure breaks the bond for good.
     if (bonded && s.fn < -p.tension * L) {
       s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);

@@ -23,7 +23,9 @@ int set_thread_count(int threads) {
   return g_threads;
 }
 
-int thread_count() { return g_threads; }
+int thread_count() {
+  return g_threads;
+}
 
 void parallel_for(size_t n, const std::function<void(size_t, size_t)>& body, size_t grain) {
   if (g_threads <= 1 || n <= grain) {
@@ -37,13 +39,16 @@ void parallel_for(size_t n, const std::function<void(size_t, size_t)>& body, siz
 double deterministic_sum(size_t n, const std::function<double(size_t)>& term) {
   const size_t chunks = (n + kGrain - 1) / kGrain;
   std::vector<double> partial(chunks, 0.0);
-  parallel_for(chunks, [&](size_t c0, size_t c1) {
-    for (size_t c = c0; c < c1; ++c) {
-      double s = 0.0;
-      for (size_t i = c * kGrain, e = std::min(n, (c + 1) * kGrain); i < e; ++i) s += term(i);
-      partial[c] = s;
-    }
-  }, 1);
+  parallel_for(
+      chunks,
+      [&](size_t c0, size_t c1) {
+        for (size_t c = c0; c < c1; ++c) {
+          double s = 0.0;
+          for (size_t i = c * kGrain, e = std::min(n, (c + 1) * kGrain); i < e; ++i) s += term(i);
+          partial[c] = s;
+        }
+      },
+      1);
   double total = 0.0;
   for (double p : partial) total += p;
   return total;

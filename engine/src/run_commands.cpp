@@ -32,7 +32,8 @@ void Interpreter::check_ready() {
   }
 }
 
-void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what) {
+void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& body,
+                                    const std::string& what) {
   check_ready();
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -45,7 +46,8 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
     }
     if (m.cycle % 64 == 0) {
       const auto now = Clock::now();
-      if (progress_seconds_ > 0 && std::chrono::duration<double>(now - last).count() >= progress_seconds_) {
+      if (progress_seconds_ > 0 &&
+          std::chrono::duration<double>(now - last).count() >= progress_seconds_) {
         last = now;
         log(progress_line(m, std::chrono::duration<double>(now - t0).count()));
       }
@@ -73,22 +75,28 @@ void Interpreter::cmd_step(Args& a) {
 }
 
 void Interpreter::cmd_solve(Args& a) {
-  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "' (write 'solve ratio=R cycles=N')");
+  if (!a.words.empty())
+    fail("unexpected word '" + a.words[0] + "' (write 'solve ratio=R cycles=N')");
   double ratio = 1e-5, cycles = 1e6;
   take_num(a, "ratio", ratio);
   take_num(a, "cycles", cycles);
   done(a);
   if (ratio <= 0.0) fail("the ratio limit must be positive");
-  if (cycles < 1 || cycles != std::floor(cycles)) fail("the cycle limit must be a whole number of at least 1");
+  if (cycles < 1 || cycles != std::floor(cycles))
+    fail("the cycle limit must be a whole number of at least 1");
   SolveResult r;
-  run_with_progress([&](const Progress& p) {
-    r = solve(model_, ratio, static_cast<uint64_t>(cycles), p, 1);
-    return r.converged;
-  }, "solve");
+  run_with_progress(
+      [&](const Progress& p) {
+        r = solve(model_, ratio, static_cast<uint64_t>(cycles), p, 1);
+        return r.converged;
+      },
+      "solve");
   if (!r.converged && !r.stopped) {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "%s:%d: warning: solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e",
-                  file_.c_str(), line_, cycles, model_.ratio, ratio);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s:%d: warning: solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e",
+        file_.c_str(), line_, cycles, model_.ratio, ratio);
     summary_.warnings.emplace_back(buf);
     log(buf);
   }
@@ -100,7 +108,8 @@ void Interpreter::cmd_history(Args& a) {
     done(a);
     return;
   }
-  if (a.words.size() != 1) fail("write 'history QUANTITY [block=ID | at=X,Y] [label=NAME]' or 'history interval N'");
+  if (a.words.size() != 1)
+    fail("write 'history QUANTITY [block=ID | at=X,Y] [label=NAME]' or 'history interval N'");
   HistorySeries s;
   bool per_block = false;
   if (!parse_history_quantity(a.words[0], s.quantity, per_block))
@@ -115,13 +124,16 @@ void Interpreter::cmd_history(Args& a) {
     const auto sel = select(a);
     if (sel.size() != 1) fail("a block history needs exactly one block (block=ID or at=X,Y)");
     s.block = static_cast<int32_t>(sel[0]);
-    s.label = has_label ? label : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1) : s.label;
+    s.label = has_label         ? label
+              : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1)
+                                : s.label;
   } else {
     take(a, "label", s.label);
   }
   done(a);
   Histories& h = model_.histories;
-  if (h.find(s.label) >= 0) fail("a history labelled '" + s.label + "' exists already: give label=");
+  if (h.find(s.label) >= 0)
+    fail("a history labelled '" + s.label + "' exists already: give label=");
   // Earlier samples get no value in the new column.
   std::vector<double> values;
   values.reserve(h.rows() * (h.columns() + 1));

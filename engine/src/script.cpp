@@ -53,7 +53,8 @@ size_t distance(const std::string& a, const std::string& b) {
   for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
   for (size_t i = 1; i <= a.size(); ++i)
     for (size_t j = 1; j <= b.size(); ++j) {
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      d[i][j] =
+          std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
       if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
         d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
@@ -72,13 +73,18 @@ std::string suggest(const std::string& word, const std::vector<std::string>& opt
   return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
 
-Interpreter::Interpreter(std::string out_dir, Log log) : out_dir_(std::move(out_dir)), log_(std::move(log)) {
+Interpreter::Interpreter(std::string out_dir, Log log)
+    : out_dir_(std::move(out_dir)), log_(std::move(log)) {
   if (!log_) log_ = [](const std::string& s) { std::cout << s << std::endl; };
 }
 
-void Interpreter::log(const std::string& s) const { log_(s); }
+void Interpreter::log(const std::string& s) const {
+  log_(s);
+}
 
-void Interpreter::fail(const std::string& message) const { throw ScriptError(file_, line_, message); }
+void Interpreter::fail(const std::string& message) const {
+  throw ScriptError(file_, line_, message);
+}
 
 void Interpreter::run_file(const std::string& path) {
   const std::string saved_file = file_;
@@ -209,10 +215,13 @@ void Interpreter::done(Args& a) const {
       for (size_t j = 0; j < a.keys.size(); ++j)
         if (a.used[j]) known.push_back(a.keys[j].first);
       fail("'" + a.keys[i].first + "' is not a keyword of '" + a.command + "'" +
-           suggest(a.keys[i].first, {"density", "kn", "ks", "friction", "cohesion", "tension",
-                                     "dilation", "dilation_limit", "law", "group", "material",
-                                     "block", "at", "x", "y", "vx", "vy", "omega", "ratio",
-                                     "cycles", "label", "safety", "groups", "origin", "brick", "courses", "bricks"}));
+           suggest(a.keys[i].first, {"density",  "kn",      "ks",       "friction",
+                                     "cohesion", "tension", "dilation", "dilation_limit",
+                                     "law",      "group",   "material", "block",
+                                     "at",       "x",       "y",        "vx",
+                                     "vy",       "omega",   "ratio",    "cycles",
+                                     "label",    "safety",  "groups",   "origin",
+                                     "brick",    "courses", "bricks"}));
     }
 }
 
@@ -240,7 +249,8 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     for (const auto& part : split_top_level(v)) {
       const int64_t id = integer(part, 1);
       if (id > static_cast<int64_t>(B.size()))
-        fail("there is no block " + std::to_string(id) + " (the model has " + std::to_string(B.size()) + ")");
+        fail("there is no block " + std::to_string(id) + " (the model has " +
+             std::to_string(B.size()) + ")");
       ids.push_back(static_cast<size_t>(id - 1));
     }
     any = true;
@@ -256,8 +266,11 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   auto& words = a.words;
   const auto it = std::find(words.begin(), words.end(), "all");
   if (it != words.end()) words.erase(it), all = any = true;
-  if (!any) fail("'" + a.command + "' needs blocks to act on: all, block=ID, at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1");
-  if (!allow_words && !words.empty()) fail("unexpected word '" + words[0] + "' after '" + a.command + "'");
+  if (!any)
+    fail("'" + a.command +
+         "' needs blocks to act on: all, block=ID, at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1");
+  if (!allow_words && !words.empty())
+    fail("unexpected word '" + words[0] + "' after '" + a.command + "'");
   std::vector<size_t> out;
   for (size_t b = 0; b < B.size(); ++b) {
     if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;

@@ -31,7 +31,8 @@ class Writer {
     if constexpr (std::is_same_v<T, Vec2>) {
       for (const Vec2& p : v) pod(p.x()), pod(p.y());
     } else {
-      out_.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+      out_.write(reinterpret_cast<const char*>(v.data()),
+                 static_cast<std::streamsize>(v.size() * sizeof(T)));
     }
   }
   void str(const std::string& s) {
@@ -92,10 +93,14 @@ void fields(IO& io, auto& m) {
   io.pod(S.damping), io.pod(S.local_alpha), io.pod(S.global_ratio), io.pod(S.dt_safety);
   io.pod(S.dt_fixed);
   auto& B = m.blocks;
-  for (auto* v : {&B.x, &B.y, &B.theta, &B.vx, &B.vy, &B.omega, &B.fx, &B.fy, &B.moment,
-                  &B.applied, &B.x_ref, &B.y_ref, &B.mass, &B.inertia, &B.inv_mass,
-                  &B.inv_inertia, &B.fixed_vx, &B.fixed_vy, &B.fixed_omega, &B.arc_radius,
-                  &B.round_length, &B.area, &B.perimeter, &B.bound_radius})
+  for (auto* v : {&B.x,           &B.y,          &B.theta,
+                  &B.vx,          &B.vy,         &B.omega,
+                  &B.fx,          &B.fy,         &B.moment,
+                  &B.applied,     &B.x_ref,      &B.y_ref,
+                  &B.mass,        &B.inertia,    &B.inv_mass,
+                  &B.inv_inertia, &B.fixed_vx,   &B.fixed_vy,
+                  &B.fixed_omega, &B.arc_radius, &B.round_length,
+                  &B.area,        &B.perimeter,  &B.bound_radius})
     io.vec(*v);
   io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
   io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);

@@ -21,7 +21,8 @@ void validate(const Model& m) {
     require(v->size() == n, "block array sizes differ");
   require(B.vert_begin.size() == n + 1, "vertex offsets do not match the block count");
   for (size_t b = 0; b < n; ++b) {
-    require(B.vertex_count(b) >= 3, "block " + std::to_string(B.id[b]) + " has fewer than 3 vertices");
+    require(B.vertex_count(b) >= 3,
+            "block " + std::to_string(B.id[b]) + " has fewer than 3 vertices");
     require(std::isfinite(B.x[b]) && std::isfinite(B.y[b]) && std::isfinite(B.theta[b]),
             "block " + std::to_string(B.id[b]) + " position is not finite");
   }

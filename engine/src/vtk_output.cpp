@@ -23,8 +23,8 @@ void numbers(std::ostream& out, size_t n, F value) {
 // One DataArray element with `comps` components per tuple.
 template <class F>
 void array(std::ostream& out, const char* type, const char* name, int comps, size_t n, F value) {
-  out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\""
-      << comps << "\" format=\"ascii\">\n";
+  out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << comps
+      << "\" format=\"ascii\">\n";
   numbers(out, n * static_cast<size_t>(comps), value);
   out << "</DataArray>\n";
 }
@@ -39,7 +39,8 @@ void write_blocks(const Model& m, const std::string& path) {
   const Blocks& B = m.blocks;
   const size_t n = B.size(), nv = B.world_vertex.size();
   std::ofstream out = open_file(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n"
       << "<PolyData>\n<Piece NumberOfPoints=\"" << nv << "\" NumberOfPolys=\"" << n << "\">\n";
   out << "<Points>\n";
   array(out, "Float64", "Points", 3, nv, [&](size_t k) {
@@ -73,7 +74,8 @@ void write_contacts(const Model& m, const std::string& path) {
   const Blocks& B = m.blocks;
   const size_t n = C.size();
   std::ofstream out = open_file(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n"
       << "<PolyData>\n<Piece NumberOfPoints=\"" << 2 * n << "\" NumberOfLines=\"" << n << "\">\n";
   // Each contact is drawn as a segment of its length along the interface.
   out << "<Points>\n";
@@ -92,7 +94,8 @@ void write_contacts(const Model& m, const std::string& path) {
   array(out, "Float64", "shear_force", 1, n, [&](size_t i) { return C.fs[i]; });
   array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return per_length(C.fn[i], i); });
   array(out, "Float64", "shear_stress", 1, n, [&](size_t i) { return per_length(C.fs[i], i); });
-  array(out, "Float64", "opening", 1, n, [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
+  array(out, "Float64", "opening", 1, n,
+        [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
   array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
   array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(C.flags[i]); });
@@ -120,7 +123,8 @@ VtkSeries::VtkSeries(std::string dir) : dir_(std::move(dir)) {}
 void VtkSeries::write(const Model& m) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
-  if (ec) throw std::runtime_error(dir_ + ": cannot create the output folder (" + ec.message() + ")");
+  if (ec)
+    throw std::runtime_error(dir_ + ": cannot create the output folder (" + ec.message() + ")");
   char name[64];
   std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
   write_blocks(m, dir_ + "/blocks_" + name);
@@ -136,8 +140,9 @@ void VtkSeries::write_collection(const std::string& name) const {
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   char buf[160];
   for (size_t f = 0; f < times_.size(); ++f) {
-    std::snprintf(buf, sizeof buf, "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n",
-                  times_[f], name.c_str(), f);
+    std::snprintf(buf, sizeof buf,
+                  "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n", times_[f],
+                  name.c_str(), f);
     out << buf;
   }
   out << "</Collection>\n</VTKFile>\n";

@@ -10,9 +10,9 @@ namespace tessera {
 
 // The feature of a block nearest to a rounded corner, with the contact geometry it gives.
 struct FeatureHit {
-  uint8_t kind = 0;      // ContactKind
-  uint32_t feature = 0;  // global vertex index: the corner, or the start of the edge
-  double gap = 0.0;      // negative when overlapping
+  uint8_t kind = 0;            // ContactKind
+  uint32_t feature = 0;        // global vertex index: the corner, or the start of the edge
+  double gap = 0.0;            // negative when overlapping
   Vec2 normal = Vec2::Zero();  // unit, from the block towards the corner
   Vec2 point = Vec2::Zero();   // middle of the overlap
   double chord = 0.0;          // chord of the arc across the edge or the other arc

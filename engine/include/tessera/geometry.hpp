@@ -10,9 +10,13 @@ namespace tessera {
 using Vec2 = Eigen::Vector2d;
 
 // z-component of the cross product of two plane vectors.
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 // The vector turned 90 degrees counter-clockwise.
-inline Vec2 perp(const Vec2& a) { return {-a.y(), a.x()}; }
+inline Vec2 perp(const Vec2& a) {
+  return {-a.y(), a.x()};
+}
 
 // Area, centroid and polar second moment (about the centroid) of a simple polygon.
 struct PolygonProperties {

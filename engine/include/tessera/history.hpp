@@ -11,8 +11,19 @@ namespace tessera {
 struct Model;
 
 enum class HistoryQuantity : uint8_t {
-  kXDisp, kYDisp, kXVel, kYVel, kRotation, kAngVel, kXPos, kYPos,  // of one block
-  kRatio, kUnbalanced, kKinetic, kTime, kTimestep                   // of the model
+  kXDisp,
+  kYDisp,
+  kXVel,
+  kYVel,
+  kRotation,
+  kAngVel,
+  kXPos,
+  kYPos,  // of one block
+  kRatio,
+  kUnbalanced,
+  kKinetic,
+  kTime,
+  kTimestep  // of the model
 };
 
 struct HistorySeries {

@@ -23,7 +23,9 @@ class ScriptError : public std::runtime_error {
  public:
   ScriptError(const std::string& file, int line, const std::string& message)
       : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
-        file_(file), line_(line), message_(message) {}
+        file_(file),
+        line_(line),
+        message_(message) {}
   const std::string& file() const { return file_; }
   int line() const { return line_; }
   const std::string& message() const { return message_; }
