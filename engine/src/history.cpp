@@ -53,6 +53,12 @@ const char* history_quantity_name(HistoryQuantity q) {
   return "?";
 }
 
+std::vector<std::string> history_quantity_names() {
+  std::vector<std::string> out;
+  for (const auto& n : kNames) out.emplace_back(n.name);
+  return out;
+}
+
 double history_value(const Model& m, const HistorySeries& s) {
   const Blocks& B = m.blocks;
   const auto b = static_cast<size_t>(std::max(0, s.block));

@@ -114,8 +114,7 @@ void Interpreter::cmd_history(Args& a) {
   bool per_block = false;
   if (!parse_history_quantity(a.words[0], s.quantity, per_block))
     fail("'" + a.words[0] + "' is not a history quantity" +
-         suggest(a.words[0], {"xdisp", "ydisp", "xvel", "yvel", "rotation", "angvel", "xpos",
-                              "ypos", "ratio", "unbalanced", "kinetic", "time", "timestep"}));
+         suggest(a.words[0], history_quantity_names()));
   s.label = a.words[0];
   if (per_block) {
     a.words.clear();

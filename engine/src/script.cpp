@@ -178,7 +178,7 @@ Vec2 Interpreter::point(const std::string& text) const {
 int64_t Interpreter::integer(const std::string& text, int64_t min) const {
   const double v = num(text);
   if (v != std::floor(v) || v < static_cast<double>(min) || v > 9e15)
-    fail("'" + text + "' must be a whole number of at least " + std::to_string(min));
+    fail("'" + text + "' must be a whole number from " + std::to_string(min) + " to 9e15");
   return static_cast<int64_t>(v);
 }
 

@@ -47,6 +47,8 @@ struct Histories {
 // Quantity by script keyword, true if known; `block_quantity` says whether it needs a block.
 bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity);
 const char* history_quantity_name(HistoryQuantity q);
+// Every quantity's keyword, for messages.
+std::vector<std::string> history_quantity_names();
 // Current value of one series.
 double history_value(const Model& m, const HistorySeries& s);
 // Samples all series if the model's cycle is on the interval (or always when forced).
