@@ -64,6 +64,13 @@ class TestScriptErrors : public QObject {
                             "block 0.5,0.5 1.5,0.5 1.5,1.5 0.5,1.5 material=rock\nstep 1");
     QVERIFY(has(e, "test:7: blocks 1 and 2 overlap"));
   }
+  void crossingBlocksAreNamed() {
+    // A "+" of two bars: no vertex of either lies inside the other.
+    const auto e = error_of(std::string(kBase) +
+                            "joint assign j\nblock 0,1 3,1 3,2 0,2 material=rock\n"
+                            "block 1,0 2,0 2,3 1,3 material=rock\nstep 1");
+    QVERIFY(has(e, "test:7: blocks 1 and 2 overlap"));
+  }
   void missingJointAssignmentIsNamed() {
     const auto e = error_of(std::string(kBase) +
                             "block 0,0 1,0 1,1 0,1 material=rock group=a\n"
@@ -98,6 +105,21 @@ class TestScriptErrors : public QObject {
       QCOMPARE(e.line(), 3);
       QVERIFY(has(e.message(), "'densty'"));
     }
+  }
+  void selfCallingFileIsStopped() {
+    QTemporaryDir dir;
+    const std::string loop = dir.path().toStdString() + "/loop.tess";
+    std::ofstream(loop) << "call loop.tess\n";
+    Interpreter interp(dir.path().toStdString(), [](const std::string&) {});
+    try {
+      interp.run_file(loop);
+      QFAIL("no error raised");
+    } catch (const ScriptError& e) {
+      QVERIFY(has(e.what(), "nests more than 32 files deep"));
+    }
+    // The interpreter is usable afterwards, with its own folder stack intact.
+    interp.execute("set a = 2");
+    QCOMPARE(interp.variable("a"), 2.0);
   }
   void variablesReachEveryNumber() {
     ScriptRun r;

@@ -49,6 +49,19 @@ void update_contacts(Model& m) {
       const bool lost = C.kind[i] == kLost;
       const Vec2& c = B.world_arc_centre[v];
       const double r = B.arc_radius[v], depth = max_contact_depth(B, a, b);
+      // A corner in a notch keeps its face: valid or lost, no search.
+      if (C.flags[i] & kNotch) {
+        if (C.kind[i] == kCornerEdge &&
+            edge_feature(B, b, C.feature[i], c, r, depth, hit, nullptr)) {
+          C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point;
+          C.chord[i] = hit.chord;
+        } else {
+          C.kind[i] = kLost;
+          C.gap[i] = std::numeric_limits<double>::infinity();
+          C.chord[i] = 0.0;
+        }
+        continue;
+      }
       // Fast path: still well inside the span of the same edge.
       double margin = -1.0;
       if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], c, r, depth, hit, &margin) &&
@@ -72,9 +85,40 @@ void update_contacts(Model& m) {
   });
 }
 
-// Per interface: shares the length among its contacts (L = RQ1/2 + RQ2/2 with the neighbours
-// along the interface as Q1, Q2; never less than the contact's own chord), then applies the
-// joint law to each contact and turns its forces into a vector.
+// Shares a joint line's length among its contacts, given as (position along the line, index):
+// L = RQ1/2 + RQ2/2 with the neighbours as Q1, Q2, never less than a contact's own chord.
+// Contacts closer than `merge` stand at one point (two corners meeting face to face): the
+// point's share is split evenly, so that round-off in their order cannot move the length from
+// one to the other from cycle to cycle.
+void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge, Contacts& C) {
+  // Insertion sort: a line has a handful of contacts, mostly in order already.
+  for (size_t j = 1; j < along.size(); ++j)
+    for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q) std::swap(along[q], along[q - 1]);
+  const size_t k = along.size();
+  // Centre of the group of contacts starting at g0; g1 receives the index past the group.
+  auto group = [&](size_t g0, size_t& g1) {
+    g1 = g0 + 1;
+    double sum = along[g0].first;
+    while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) sum += along[g1++].first;
+    return sum / static_cast<double>(g1 - g0);
+  };
+  size_t g0 = 0, g1 = 0;
+  double prev = 0.0, centre = k ? group(0, g1) : 0.0;
+  while (g0 < k) {
+    size_t g2 = g1;
+    const double next = g1 < k ? group(g1, g2) : centre;
+    const double len = 0.5 * ((g0 > 0 ? centre - prev : 0.0) + (next - centre));
+    for (size_t j = g0; j < g1; ++j) {
+      const uint32_t i = along[j].second;
+      C.length[i] = std::max(len / static_cast<double>(g1 - g0), C.chord[i]);
+    }
+    prev = centre, centre = next, g0 = g1, g1 = g2;
+  }
+}
+
+// Per interface: the length of each contact, then the joint law for each contact, giving its
+// force. Contacts facing the same way form one joint line (a concave block can touch another
+// along two faces); each line shares its length on its own.
 void update_interfaces(Model& m) {
   const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
@@ -84,47 +128,25 @@ void update_interfaces(Model& m) {
       C.pair_count(),
       [&](size_t p0, size_t p1) {
         std::vector<std::pair<double, uint32_t>> along;
+        std::vector<uint8_t> placed;
         for (size_t p = p0; p < p1; ++p) {
           const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
-          along.clear();
-          Vec2 t = Vec2::Zero();
+          placed.assign(c1 - c0, 0);
+          for (uint32_t i = c0; i < c1; ++i) C.length[i] = 0.0;
           for (uint32_t i = c0; i < c1; ++i) {
-            C.length[i] = 0.0;
-            if (C.kind[i] == kLost) continue;
-            if (along.empty()) t = perp(C.normal[i]);
-            along.emplace_back(C.point[i].dot(t), i);
-          }
-          // Insertion sort: an interface has a handful of contacts, mostly in order already.
-          for (size_t j = 1; j < along.size(); ++j)
-            for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q)
-              std::swap(along[q], along[q - 1]);
-          // Contacts closer than `merge` along the interface stand at one point (two corners
-          // meeting face to face): the point's share is split evenly, so that round-off in their
-          // order can never move the length from one to the other.
-          const size_t k = along.size();
-          size_t g0 = 0;
-          double prev_centre = 0.0;
-          while (g0 < k) {
-            size_t g1 = g0 + 1;
-            while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) ++g1;
-            double centre = 0.0;
-            for (size_t j = g0; j < g1; ++j) centre += along[j].first;
-            centre /= static_cast<double>(g1 - g0);
-            double next_centre = centre;
-            if (g1 < k) {
-              size_t g2 = g1 + 1;
-              while (g2 < k && along[g2].first - along[g2 - 1].first <= merge) ++g2;
-              next_centre = 0.0;
-              for (size_t j = g1; j < g2; ++j) next_centre += along[j].first;
-              next_centre /= static_cast<double>(g2 - g1);
-            }
-            const double len =
-                0.5 * ((g0 > 0 ? centre - prev_centre : 0.0) + (next_centre - centre));
-            for (size_t j = g0; j < g1; ++j)
-              C.length[along[j].second] =
-                  std::max(len / static_cast<double>(g1 - g0), C.chord[along[j].second]);
-            prev_centre = centre;
-            g0 = g1;
+            if (C.kind[i] == kLost || placed[i - c0]) continue;
+            // Normals point towards the owner: compare them turned to point the same way.
+            const auto facing = [&](uint32_t q) {
+              return C.a[q] < C.b[q] ? C.normal[q] : Vec2(-C.normal[q]);
+            };
+            const Vec2 n0 = facing(i), t = perp(n0);
+            along.clear();
+            for (uint32_t q = i; q < c1; ++q)
+              if (C.kind[q] != kLost && !placed[q - c0] && facing(q).dot(n0) > 0.8) {
+                placed[q - c0] = 1;
+                along.emplace_back(C.point[q].dot(t), q);
+              }
+            share_length(along, merge, C);
           }
           for (uint32_t i = c0; i < c1; ++i) {
             if (C.kind[i] == kLost) {

@@ -96,8 +96,8 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
 // A contact found in this pass: corner `corner` of `owner` against `other`.
 struct Found {
   uint32_t lo, hi, owner, corner, other;
+  uint8_t slot;
   FeatureHit hit;
-  auto key() const { return std::tie(lo, hi, owner, corner); }
 };
 
 // Corners of `owner` within reach of block `other`.
@@ -113,10 +113,20 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
         c.y() - r > other_box.y1)
       continue;
     FeatureHit hit;
-    if (!nearest_feature(B, other, c, r, corners, 0, nf, max_contact_depth(B, owner, other), hit) ||
-        hit.gap >= reach)
-      continue;
-    out.push_back({std::min(owner, other), std::max(owner, other), owner, v, other, hit});
+    const double depth = max_contact_depth(B, owner, other);
+    if (!nearest_feature(B, other, c, r, corners, 0, nf, depth, hit) || hit.gap >= reach) continue;
+    const uint32_t lo = std::min(owner, other), hi = std::max(owner, other);
+    out.push_back({lo, hi, owner, v, other, 0, hit});
+    if (B.all_convex[other] || hit.kind != kCornerEdge) continue;
+    // In the notch of a concave block the corner also touches a second face.
+    FeatureHit second, h;
+    bool has_second = false;
+    for (uint32_t e = B.vert_begin[other]; e < B.vert_begin[other + 1]; ++e)
+      if (edge_feature(B, other, e, c, r, depth, h, nullptr) && h.gap < reach &&
+          h.normal.dot(hit.normal) < 0.7 && (!has_second || std::abs(h.gap) < std::abs(second.gap)))
+        second = h, has_second = true;
+    if (!has_second) continue;
+    out.push_back({lo, hi, owner, v, other, 1, second});
   }
 }
 
@@ -143,10 +153,11 @@ void detect_contacts(Model& m) {
   size_t j = 0;
   auto old_key = [&](size_t i) {
     const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
-    return std::make_tuple(lo, hi, old.a[i], old.corner[i]);
+    return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
   };
-  for (const Found& f : found) {
-    const auto key = std::make_tuple(f.lo, f.hi, f.owner, f.corner);
+  for (size_t k = 0; k < found.size(); ++k) {
+    const Found& f = found[k];
+    const auto key = std::make_tuple(f.lo, f.hi, f.owner, f.corner, f.slot);
     while (j < old.size() && old_key(j) < key) ++j;
     if (j < old.size() && old_key(j) == key) {
       next.push_from(old, j);
@@ -162,7 +173,7 @@ void detect_contacts(Model& m) {
                          ") and block " + std::to_string(B.id[f.other]) + " (group " +
                          group_name(f.other) + "): use 'joint assign'");
       }
-      next.push_new(f.owner, f.other, f.corner, static_cast<uint32_t>(joint));
+      next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint));
       const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
       // Joints present when the model is assembled are bonded (cohesion and tension act).
       if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0)) next.flags.back() |= kBonded;
@@ -170,6 +181,9 @@ void detect_contacts(Model& m) {
     const size_t i = next.size() - 1;
     next.kind[i] = f.hit.kind, next.feature[i] = f.hit.feature, next.gap[i] = f.hit.gap;
     next.normal[i] = f.hit.normal, next.point[i] = f.hit.point, next.chord[i] = f.hit.chord;
+    // Both contacts of a corner in a notch keep their own face.
+    const bool notch = f.slot == 1 || (k + 1 < found.size() && found[k + 1].slot == 1);
+    next.flags[i] = static_cast<uint8_t>(notch ? next.flags[i] | kNotch : next.flags[i] & ~kNotch);
   }
   // Interface ranges.
   next.pair_begin.assign(1, 0);
@@ -223,9 +237,23 @@ std::string find_overlap(const Model& m) {
       }
       return false;
     };
-    const bool centroid_in = point_in_polygon(Vec2(B.x[lo], B.y[lo]), pb) ||
-                             point_in_polygon(Vec2(B.x[hi], B.y[hi]), pa);
-    if (centroid_in || deep_inside(pa, pb) || deep_inside(pb, pa)) {
+    // Two edges crossing each other by more than the tolerance (a "+" of two blocks, where
+    // no vertex of either lies inside the other).
+    auto edges_cross = [&] {
+      for (size_t i = 0; i < pa.size(); ++i)
+        for (size_t k = 0; k < pb.size(); ++k) {
+          const Vec2 &a0 = pa[i], &a1 = pa[(i + 1) % pa.size()];
+          const Vec2 &b0 = pb[k], &b1 = pb[(k + 1) % pb.size()];
+          const Vec2 ua = (a1 - a0).normalized(), ub = (b1 - b0).normalized();
+          const double d1 = cross(ua, b0 - a0), d2 = cross(ua, b1 - a0);
+          const double d3 = cross(ub, a0 - b0), d4 = cross(ub, a1 - b0);
+          if (std::min(d1, d2) < -tol && std::max(d1, d2) > tol && std::min(d3, d4) < -tol &&
+              std::max(d3, d4) > tol)
+            return true;
+        }
+      return false;
+    };
+    if (deep_inside(pa, pb) || deep_inside(pb, pa) || edges_cross()) {
       std::ostringstream s;
       s << "blocks " << B.id[lo] << " and " << B.id[hi] << " overlap (near x=" << B.x[lo]
         << ", y=" << B.y[lo] << ")";

@@ -94,17 +94,21 @@ void Interpreter::run_file(const std::string& path) {
     if (call_depth_ > 0) fail("cannot open '" + path + "'");
     throw ScriptError(path, 0, "cannot open the script file");
   }
-  if (++call_depth_ > 32) fail("'call' nests more than 32 files deep (a file calls itself?)");
-  dir_stack_.push_back(fs::path(path).parent_path().string());
-  if (dir_stack_.back().empty()) dir_stack_.back() = ".";
+  if (call_depth_ >= 32) fail("'call' nests more than 32 files deep (a file calls itself?)");
+  const std::string dir = fs::path(path).parent_path().string();
+  dir_stack_.push_back(dir.empty() ? std::string(".") : dir);
+  ++call_depth_;
+  // Leave the interpreter as it was on the way out, error or not (the GUI goes on using it).
+  struct Restore {
+    Interpreter& self;
+    ~Restore() { self.dir_stack_.pop_back(), --self.call_depth_; }
+  } restore{*this};
   std::string text;
   int n = 0;
   while (std::getline(in, text)) {
     ++n;
     execute(text, path, n);
   }
-  dir_stack_.pop_back();
-  --call_depth_;
   file_ = saved_file, line_ = saved_line;
 }
 

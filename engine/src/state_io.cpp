@@ -106,7 +106,8 @@ void fields(IO& io, auto& m) {
   io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);
   io.vec(B.group), io.vec(B.material), io.vec(B.id);
   auto& C = m.contacts;
-  io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.kind), io.vec(C.feature), io.vec(C.flags);
+  io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.slot), io.vec(C.kind), io.vec(C.feature),
+      io.vec(C.flags);
   io.vec(C.joint), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
   io.vec(C.shear_disp);

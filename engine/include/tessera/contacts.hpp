@@ -7,11 +7,14 @@
 // feature it faces may change from cycle to cycle as the corner slides along `b`.
 //
 // Identity is (a, corner, b); contacts are sorted by unordered block pair and then by identity,
-// so that the contacts of one interface lie together. Each interface shares its length between
-// its contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts along the
+// so that the contacts of one interface lie together. Each joint line of an interface (contacts
+// whose normals agree) shares its length between its contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts along the
 // interface as Q1 and Q2 (all contacts within the tolerance count, touching or not, so that L
 // does not jump when one corner lifts); a lone contact, and never less than this, takes the chord
 // of its rounded arc across the opposite edge or arc (cases 2 and 3 of 5.2.2).
+//
+// A corner sitting in the notch of a concave block touches two of its faces: it then has two
+// contacts (slots 0 and 1), each held to its own face until the next detection pass.
 //
 // A corner-to-corner touch is kept once: only the owner with the lower block index may face a
 // corner; the higher one faces edges only. Contacts are found within a tolerance before the
@@ -32,11 +35,14 @@ enum ContactFlag : uint8_t {
   kSlipping = 2,  // at the Coulomb limit this cycle
   kTouching = 4,  // overlap or bond: carries force and takes a share of the interface length
   kBroken = 8,    // was bonded and failed, for output
+  kNotch = 16,    // a corner touching two faces of a concave block: each contact keeps its face
 };
 
 struct Contacts {
-  // Identity: global vertex `corner` of block `a` against block `b`.
+  // Identity: global vertex `corner` of block `a` against block `b`; `slot` 1 for the second face
+  // of a notch the corner sits in.
   std::vector<uint32_t> a, b, corner;
+  std::vector<uint8_t> slot;
   // The feature of b faced: kind, and global vertex index (edge from that vertex to the next).
   std::vector<uint8_t> kind;
   std::vector<uint32_t> feature;
@@ -61,7 +67,7 @@ struct Contacts {
   // Appends a contact copied from another store (used when merging a detection pass).
   void push_from(const Contacts& src, size_t i);
   // Appends a fresh contact with no history.
-  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint32_t joint_);
+  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_, uint32_t joint_);
 };
 
 }  // namespace tessera
