@@ -7,6 +7,6 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   cmake ninja-build g++ make \
-  libeigen3-dev libtbb-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libcli11-dev libfmt-dev nlohmann-json3-dev \
   qt6-base-dev >/dev/null
 echo "install-deps: done"

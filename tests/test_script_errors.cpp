@@ -62,14 +62,14 @@ class TestScriptErrors : public QObject {
     const auto e = error_of(std::string(kBase) +
                             "joint assign j\nblock 0,0 1,0 1,1 0,1 material=rock\n"
                             "block 0.5,0.5 1.5,0.5 1.5,1.5 0.5,1.5 material=rock\nstep 1");
-    QVERIFY(has(e, "test:7: blocks 1 and 2 overlap"));
+    QVERIFY(has(e, "test:7: error: blocks 1 and 2 overlap"));
   }
   void crossingBlocksAreNamed() {
     // A "+" of two bars: no vertex of either lies inside the other.
     const auto e = error_of(std::string(kBase) +
                             "joint assign j\nblock 0,1 3,1 3,2 0,2 material=rock\n"
                             "block 1,0 2,0 2,3 1,3 material=rock\nstep 1");
-    QVERIFY(has(e, "test:7: blocks 1 and 2 overlap"));
+    QVERIFY(has(e, "test:7: error: blocks 1 and 2 overlap"));
   }
   void missingJointAssignmentIsNamed() {
     const auto e = error_of(std::string(kBase) +

@@ -6,7 +6,7 @@
 namespace tessera {
 
 size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density, int group_id,
-                   int material_id) {
+                   int material_id, const std::vector<int>& edge_tags) {
   const PolygonProperties props = polygon_properties(pts);
   const std::vector<RoundedCorner> corners = round_corners(pts, rounding);
   const size_t b = size();
@@ -30,6 +30,7 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
     convex.push_back(corners[i].convex ? 1 : 0);
     const Vec2 e = pts[(i + 1) % pts.size()] - pts[i];
     local_edge_dir.push_back(e / e.norm());
+    edge_tag.push_back(i < edge_tags.size() ? edge_tags[i] : -1);
     edge_length.push_back(e.norm());
     world_vertex.push_back(pts[i]);
     world_arc_centre.push_back(corners[i].centre);
@@ -49,7 +50,7 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
   fixity.push_back(kFree);
   group.push_back(group_id);
   material.push_back(material_id);
-  id.push_back(static_cast<int>(b) + 1);
+  id.push_back(id.empty() ? 1 : *std::max_element(id.begin(), id.end()) + 1);
   set_density(b, density);
   return b;
 }
@@ -84,6 +85,46 @@ void Blocks::update_world(size_t b) {
 
 std::vector<Vec2> Blocks::world_polygon(size_t b) const {
   return {world_vertex.begin() + vert_begin[b], world_vertex.begin() + vert_begin[b + 1]};
+}
+
+}  // namespace tessera
+
+namespace tessera {
+
+std::vector<int> Blocks::remove(const std::vector<uint8_t>& doomed) {
+  const size_t n = size();
+  std::vector<int> map(n, -1);
+  Blocks kept;
+  kept.vert_begin = {0};
+  // Per-block and per-vertex arrays, copied for the blocks that stay.
+  auto block_arrays = [](Blocks& b) {
+    return std::vector<std::vector<double>*>{
+        &b.x,           &b.y,       &b.theta,     &b.vx,          &b.vy,       &b.omega,
+        &b.fx,          &b.fy,      &b.moment,    &b.applied,     &b.x_ref,    &b.y_ref,
+        &b.mass,        &b.inertia, &b.inv_mass,  &b.inv_inertia, &b.fixed_vx, &b.fixed_vy,
+        &b.fixed_omega, &b.area,    &b.perimeter, &b.bound_radius};
+  };
+  auto src = block_arrays(*this), dst = block_arrays(kept);
+  for (size_t b = 0; b < n; ++b) {
+    if (doomed[b]) continue;
+    map[b] = static_cast<int>(kept.x.size());
+    for (size_t k = 0; k < src.size(); ++k) dst[k]->push_back((*src[k])[b]);
+    kept.fixity.push_back(fixity[b]), kept.all_convex.push_back(all_convex[b]);
+    kept.group.push_back(group[b]), kept.material.push_back(material[b]), kept.id.push_back(id[b]);
+    for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v) {
+      kept.local_vertex.push_back(local_vertex[v]),
+          kept.local_arc_centre.push_back(local_arc_centre[v]);
+      kept.arc_radius.push_back(arc_radius[v]), kept.round_length.push_back(round_length[v]);
+      kept.convex.push_back(convex[v]), kept.local_edge_dir.push_back(local_edge_dir[v]);
+      kept.edge_length.push_back(edge_length[v]), kept.edge_tag.push_back(edge_tag[v]);
+      kept.world_vertex.push_back(world_vertex[v]),
+          kept.world_arc_centre.push_back(world_arc_centre[v]);
+      kept.world_edge_dir.push_back(world_edge_dir[v]);
+    }
+    kept.vert_begin.push_back(static_cast<uint32_t>(kept.local_vertex.size()));
+  }
+  *this = std::move(kept);
+  return map;
 }
 
 }  // namespace tessera

@@ -36,6 +36,14 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"restore", &Interpreter::cmd_restore},
       {"call", &Interpreter::cmd_call},
       {"wall", &Interpreter::cmd_wall},
+      {"region", &Interpreter::cmd_region},
+      {"crack", &Interpreter::cmd_crack},
+      {"jset", &Interpreter::cmd_jset},
+      {"tunnel", &Interpreter::cmd_tunnel},
+      {"voronoi", &Interpreter::cmd_voronoi},
+      {"arch", &Interpreter::cmd_arch},
+      {"delete", &Interpreter::cmd_delete},
+      {"check", &Interpreter::cmd_check},
   };
   return h;
 }
@@ -203,11 +211,20 @@ void Interpreter::cmd_joint(Args& a) {
           fail("there is no group '" + g[static_cast<size_t>(i)] + "'" +
                suggest(g[static_cast<size_t>(i)], model_.groups));
     }
+    std::string joints;
+    if (take(a, "joints", joints)) {
+      ja.tag = -1;
+      for (size_t t = 0; t < model_.joint_tags.size(); ++t)
+        if (model_.joint_tags[t] == joints) ja.tag = static_cast<int>(t);
+      if (ja.tag < 0)
+        fail("there are no joints named '" + joints + "'" + suggest(joints, model_.joint_tags));
+    }
     done(a);
     model_.joint_table.push_back(ja);
     // Existing contacts take the new properties at once.
     for (size_t i = 0; i < model_.contacts.size(); ++i) {
-      const int j = model_.joint_for(model_.contacts.a[i], model_.contacts.b[i]);
+      const int j =
+          model_.joint_for(model_.contacts.a[i], model_.contacts.b[i], model_.contacts.tag[i]);
       if (j >= 0) model_.contacts.joint[i] = static_cast<uint32_t>(j);
     }
     model_.touch();
@@ -217,10 +234,14 @@ void Interpreter::cmd_joint(Args& a) {
 }
 
 void Interpreter::cmd_block(Args& a) {
-  if (model_.settings.rounding <= 0.0)
-    fail("set the rounding length with 'round D' before the first block");
   std::vector<Vec2> pts;
   for (const auto& w : a.words) pts.push_back(point(w));
+  make_block(pts, a);
+}
+
+void Interpreter::make_block(std::vector<Vec2> pts, Args& a) {
+  if (model_.settings.rounding <= 0.0)
+    fail("set the rounding length with 'round D' before the first block");
   const std::string which = "block " + std::to_string(model_.blocks.size() + 1);
   if (const std::string why = polygon_problem(pts); !why.empty()) fail(which + ": " + why);
   if (signed_area(pts) < 0.0) std::reverse(pts.begin(), pts.end());

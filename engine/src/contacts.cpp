@@ -4,7 +4,8 @@ namespace tessera {
 
 void Contacts::clear() {
   a.clear(), b.clear(), corner.clear(), slot.clear(), kind.clear(), feature.clear(), flags.clear();
-  joint.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(), length.clear();
+  joint.clear(), tag.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(),
+      length.clear();
   fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear(),
       force_mag.clear();
   pair_begin.assign(1, 0);
@@ -14,7 +15,8 @@ void Contacts::push_from(const Contacts& s, size_t i) {
   a.push_back(s.a[i]), b.push_back(s.b[i]), corner.push_back(s.corner[i]),
       slot.push_back(s.slot[i]);
   kind.push_back(s.kind[i]), feature.push_back(s.feature[i]), flags.push_back(s.flags[i]);
-  joint.push_back(s.joint[i]), normal.push_back(s.normal[i]), point.push_back(s.point[i]);
+  joint.push_back(s.joint[i]), tag.push_back(s.tag[i]), normal.push_back(s.normal[i]),
+      point.push_back(s.point[i]);
   gap.push_back(s.gap[i]), chord.push_back(s.chord[i]), length.push_back(s.length[i]);
   fn.push_back(s.fn[i]), fs.push_back(s.fs[i]), un_prev.push_back(s.un_prev[i]);
   dilation.push_back(s.dilation[i]);
@@ -22,8 +24,9 @@ void Contacts::push_from(const Contacts& s, size_t i) {
   force_mag.push_back(s.force_mag[i]);
 }
 
-void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_,
-                        uint32_t joint_) {
+void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_, uint32_t joint_,
+                        int tag_) {
+  tag.push_back(tag_);
   a.push_back(a_), b.push_back(b_), corner.push_back(corner_), slot.push_back(slot_);
   kind.push_back(kLost), feature.push_back(0), flags.push_back(0), joint.push_back(joint_);
   normal.push_back(Vec2::Zero()), point.push_back(Vec2::Zero());

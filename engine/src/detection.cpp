@@ -162,7 +162,13 @@ void detect_contacts(Model& m) {
     if (j < old.size() && old_key(j) == key) {
       next.push_from(old, j);
     } else {
-      const int joint = m.joint_for(f.owner, f.other);
+      // The joint tag of the face met (for a rounded corner, the later of its two edges).
+      const uint32_t e = f.hit.feature;
+      const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
+      const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
+      const int tag =
+          f.hit.kind == kCornerEdge ? B.edge_tag[e] : std::max(B.edge_tag[e], B.edge_tag[prev]);
+      const int joint = m.joint_for(f.owner, f.other, tag);
       if (joint < 0) {
         const auto group_name = [&](uint32_t b) {
           return B.group[b] >= 0 ? m.groups[static_cast<size_t>(B.group[b])]
@@ -173,7 +179,7 @@ void detect_contacts(Model& m) {
                          ") and block " + std::to_string(B.id[f.other]) + " (group " +
                          group_name(f.other) + "): use 'joint assign'");
       }
-      next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint));
+      next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint), tag);
       const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
       // Joints present when the model is assembled are bonded (cohesion and tension act).
       if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0)) next.flags.back() |= kBonded;

@@ -24,3 +24,209 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 }
 
 }  // namespace tessera
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tessera/random.hpp"
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+Vec2 unit(double degrees) {
+  return {std::cos(degrees * kDeg), std::sin(degrees * kDeg)};
+}
+
+// Adds a polygon in either winding.
+size_t add_polygon(Model& m, std::vector<Vec2> pts, int group, int material) {
+  if (signed_area(pts) < 0.0) std::reverse(pts.begin(), pts.end());
+  const double rho = material >= 0 ? m.materials[static_cast<size_t>(material)].density : 0.0;
+  return m.blocks.add(pts, m.settings.rounding, rho, group, material);
+}
+}  // namespace
+
+size_t add_arch(Model& m, const ArchSpec& a) {
+  const double top = 90.0, start = top + a.half_angle, step = 2.0 * a.half_angle / a.voussoirs;
+  const double R = a.radius, T = a.thickness;
+  size_t added = 0;
+  for (int i = 0; i < a.voussoirs; ++i) {
+    const Vec2 u0 = unit(start - step * i), u1 = unit(start - step * (i + 1));
+    add_polygon(
+        m, {a.centre + R * u0, a.centre + R * u1, a.centre + (R + T) * u1, a.centre + (R + T) * u0},
+        a.group, a.material);
+    ++added;
+  }
+  if (a.abutment > 0.0) {
+    // Each abutment's top is the radial springing joint; its sides go straight down.
+    for (const double ang : {start, top - a.half_angle}) {
+      const Vec2 p1 = a.centre + R * unit(ang), p2 = a.centre + (R + T) * unit(ang);
+      const double base = std::min(p1.y(), p2.y()) - a.abutment;
+      add_polygon(m, {p1, p2, Vec2(p2.x(), base), Vec2(p1.x(), base)}, a.abutment_group,
+                  a.material);
+      ++added;
+    }
+  }
+  m.touch();
+  return added;
+}
+
+std::vector<CutLine> joint_set_traces(const JointSetSpec& j, const Vec2& lo, const Vec2& hi,
+                                      int tag) {
+  Random rng(j.seed);
+  const Vec2 u = unit(j.angle), n = perp(u);
+  // Extent of the box across and along the set.
+  double s0 = 1e300, s1 = -1e300, t0 = 1e300, t1 = -1e300;
+  for (const Vec2& c : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())}) {
+    s0 = std::min(s0, (c - j.origin).dot(n)), s1 = std::max(s1, (c - j.origin).dot(n));
+    t0 = std::min(t0, (c - j.origin).dot(u)), t1 = std::max(t1, (c - j.origin).dot(u));
+  }
+  const double reach = (hi - lo).norm();
+  std::vector<CutLine> out;
+  // One line of traces at offset s from the origin line.
+  auto line = [&](double s) {
+    const Vec2 d = unit(rng.normal(j.angle, j.angle_sd));
+    const Vec2 base = j.origin + s * n;
+    if (j.trace <= 0.0) {
+      out.push_back({{base + (t0 - reach) * d, base + (t1 + reach) * d}, tag});
+      return;
+    }
+    // Traces and rock bridges in turn, from a random phase before the box.
+    double t = t0 - rng.uniform() * (j.trace + j.gap);
+    while (t < t1) {
+      const double len = std::max(rng.normal(j.trace, j.trace_sd), 0.05 * j.trace);
+      out.push_back({{base + t * d, base + (t + len) * d}, tag});
+      t += len + std::max(rng.normal(j.gap, j.gap_sd), 0.0);
+    }
+  };
+  auto next_spacing = [&] {
+    return std::max(rng.normal(j.spacing, j.spacing_sd), 0.1 * j.spacing);
+  };
+  // From the origin line outwards on both sides, in a fixed order.
+  for (double s = 0.0; s <= s1; s += next_spacing())
+    if (s >= s0) line(s);
+  for (double s = -next_spacing(); s >= s0; s -= next_spacing())
+    if (s <= s1) line(s);
+  return out;
+}
+
+std::vector<Vec2> circle_outline(const Vec2& centre, double radius, int segments) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < segments; ++i) pts.push_back(centre + radius * unit(360.0 * i / segments));
+  return pts;
+}
+
+std::vector<Vec2> horseshoe_outline(const Vec2& centre, double width, double height, int segments) {
+  const double r = 0.5 * width, wall = std::max(height - r, 0.0);
+  std::vector<Vec2> pts{centre + Vec2(-r, 0), centre + Vec2(r, 0)};
+  const Vec2 c = centre + Vec2(0, wall);
+  for (int i = 0; i <= segments; ++i) pts.push_back(c + r * unit(180.0 * i / segments));
+  if (wall <= 0.0) pts.erase(pts.begin() + 2), pts.pop_back();
+  return pts;
+}
+
+int joint_tag(Model& m, const std::string& name) {
+  for (size_t i = 0; i < m.joint_tags.size(); ++i)
+    if (m.joint_tags[i] == name) return static_cast<int>(i);
+  m.joint_tags.push_back(name);
+  return static_cast<int>(m.joint_tags.size()) - 1;
+}
+
+size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
+  if (m.cycle > 0) throw ModelError("blocks can be cut only before the first cycle");
+  for (const auto& s : m.histories.series)
+    if (s.block >= 0)
+      throw ModelError("cut blocks before defining block histories (they would be renumbered)");
+  const Blocks old = m.blocks;
+  std::vector<uint8_t> in(old.size(), chosen.empty() ? 1 : 0);
+  for (size_t b : chosen) in[b] = 1;
+  std::vector<TaggedPolygon> polys;
+  std::vector<size_t> from;
+  double size = 0.0;
+  for (size_t b = 0; b < old.size(); ++b) {
+    size = std::max(size, 2.0 * old.bound_radius[b]);
+    if (!in[b]) continue;
+    polys.push_back(
+        {old.world_polygon(b),
+         {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
+    from.push_back(b);
+  }
+  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0));
+  // Rebuild: the blocks left alone first, in order, then the pieces; state comes from the parent.
+  m.blocks = Blocks{};
+  auto copy_state = [&](size_t parent) {
+    Blocks& B = m.blocks;
+    const size_t b = B.size() - 1;
+    B.fixity[b] = old.fixity[parent];
+    B.vx[b] = old.vx[parent], B.vy[b] = old.vy[parent], B.omega[b] = old.omega[parent];
+    B.fixed_vx[b] = old.fixed_vx[parent], B.fixed_vy[b] = old.fixed_vy[parent];
+    B.fixed_omega[b] = old.fixed_omega[parent];
+  };
+  auto density = [&](int mat) {
+    return mat >= 0 ? m.materials[static_cast<size_t>(mat)].density : 0.0;
+  };
+  for (size_t b = 0; b < old.size(); ++b) {
+    if (in[b]) continue;
+    m.blocks.add(
+        old.world_polygon(b), m.settings.rounding, density(old.material[b]), old.group[b],
+        old.material[b],
+        {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]});
+    copy_state(b);
+  }
+  for (size_t k = 0; k < r.pieces.size(); ++k) {
+    const size_t parent = from[r.parent[k]];
+    m.blocks.add(r.pieces[k].points, m.settings.rounding, density(old.material[parent]),
+                 old.group[parent], old.material[parent], r.pieces[k].edge_tags);
+    copy_state(parent);
+  }
+  m.contacts.clear();
+  m.det_x.clear();
+  m.touch();
+  build_adjacency(m);
+  return r.slivers_dropped;
+}
+
+void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
+  Blocks& B = m.blocks;
+  std::vector<uint8_t> doomed(B.size(), 0);
+  for (size_t b : blocks) doomed[b] = 1;
+  const std::vector<uint32_t> old_begin = B.vert_begin;
+  const std::vector<int> map = B.remove(doomed);
+  // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
+  Contacts& C = m.contacts;
+  Contacts kept;
+  for (size_t i = 0; i < C.size(); ++i) {
+    if (map[C.a[i]] < 0 || map[C.b[i]] < 0) continue;
+    kept.push_from(C, i);
+    const size_t k = kept.size() - 1;
+    const auto na = static_cast<uint32_t>(map[C.a[i]]), nb = static_cast<uint32_t>(map[C.b[i]]);
+    kept.corner[k] = C.corner[i] - old_begin[C.a[i]] + B.vert_begin[na];
+    kept.feature[k] = C.feature[i] - old_begin[C.b[i]] + B.vert_begin[nb];
+    kept.a[k] = na, kept.b[k] = nb;
+  }
+  kept.pair_begin.assign(1, 0);
+  for (size_t i = 1; i <= kept.size(); ++i)
+    if (i == kept.size() ||
+        std::minmax(kept.a[i], kept.b[i]) != std::minmax(kept.a[i - 1], kept.b[i - 1]))
+      kept.pair_begin.push_back(static_cast<uint32_t>(i));
+  if (kept.size() == 0) kept.pair_begin.assign(1, 0);
+  m.contacts = std::move(kept);
+  // Verlet references and histories follow the blocks; histories of deleted blocks end.
+  auto compact = [&](std::vector<double>& v) {
+    if (v.size() != map.size()) return;
+    std::vector<double> out;
+    for (size_t b = 0; b < map.size(); ++b)
+      if (map[b] >= 0) out.push_back(v[b]);
+    v = std::move(out);
+  };
+  compact(m.det_x), compact(m.det_y), compact(m.det_theta);
+  for (auto& s : m.histories.series)
+    if (s.block >= 0)
+      s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+  m.touch();
+  build_adjacency(m);
+}
+
+}  // namespace tessera

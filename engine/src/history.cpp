@@ -1,6 +1,7 @@
 #include "tessera/history.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -61,6 +62,8 @@ std::vector<std::string> history_quantity_names() {
 
 double history_value(const Model& m, const HistorySeries& s) {
   const Blocks& B = m.blocks;
+  // A block history whose block was deleted (-2) reads NaN from then on.
+  if (s.block == -2) return std::nan("");
   const auto b = static_cast<size_t>(std::max(0, s.block));
   switch (s.quantity) {
     case HistoryQuantity::kXDisp:

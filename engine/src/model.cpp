@@ -22,12 +22,13 @@ int Model::joint_index(const std::string& name) const {
   return -1;
 }
 
-int Model::joint_for(uint32_t a, uint32_t b) const {
+int Model::joint_for(uint32_t a, uint32_t b, int tag) const {
   const int ga = blocks.group[a], gb = blocks.group[b];
   // The last assignment that matches either way round wins.
   for (size_t k = joint_table.size(); k-- > 0;) {
     const JointAssignment& j = joint_table[k];
     const auto matches = [](int want, int g) { return want < 0 || want == g; };
+    if (j.tag >= 0 && j.tag != tag) continue;
     if ((matches(j.group_a, ga) && matches(j.group_b, gb)) ||
         (matches(j.group_a, gb) && matches(j.group_b, ga)))
       return static_cast<int>(j.joint);

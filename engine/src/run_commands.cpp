@@ -26,8 +26,7 @@ std::string progress_line(const Model& m, double elapsed) {
 void Interpreter::check_ready() {
   if (!overlap_checked_) {
     for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
-    if (const std::string o = find_overlap(model_); !o.empty())
-      fail(o + ": blocks must not overlap; check their vertices");
+    run_checks(true);
     overlap_checked_ = true;
   }
 }

@@ -267,6 +267,33 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (!hit) fail("no block contains the point " + v);
     any = true;
   }
+  // Centroid inside a circle X,Y,R or a polygon (X,Y X,Y ...).
+  double cx = 0, cy = 0, cr = -1;
+  if (take(a, "circle", v)) {
+    const auto parts = split_top_level(v);
+    if (parts.size() != 3) fail("write circle=X,Y,R");
+    cx = num(parts[0]), cy = num(parts[1]), cr = num(parts[2]);
+    any = true;
+  }
+  std::vector<Vec2> inside;
+  if (take(a, "polygon", v)) {
+    std::string body = v;
+    if (body.size() >= 2 && body.front() == '(' && body.back() == ')')
+      body = body.substr(1, body.size() - 2);
+    std::istringstream in(body);
+    for (std::string w; in >> w;) inside.push_back(point(w));
+    if (inside.size() < 3) fail("write polygon=(X,Y X,Y X,Y ...) with at least three points");
+    any = true;
+  }
+  // Blocks with an edge on a named joint set, crack or opening.
+  int joints = -2;
+  if (take(a, "joints", v)) {
+    joints = -1;
+    for (size_t t = 0; t < model_.joint_tags.size(); ++t)
+      if (model_.joint_tags[t] == v) joints = static_cast<int>(t);
+    if (joints < 0) fail("there are no joints named '" + v + "'" + suggest(v, model_.joint_tags));
+    any = true;
+  }
   auto& words = a.words;
   const auto it = std::find(words.begin(), words.end(), "all");
   if (it != words.end()) words.erase(it), all = any = true;
@@ -280,6 +307,12 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;
     if (group >= -1 && B.group[b] != group) continue;
     if (B.x[b] < x0 || B.x[b] > x1 || B.y[b] < y0 || B.y[b] > y1) continue;
+    if (cr >= 0.0 && std::hypot(B.x[b] - cx, B.y[b] - cy) > cr) continue;
+    if (!inside.empty() && !point_in_polygon(Vec2(B.x[b], B.y[b]), inside)) continue;
+    if (joints >= 0 &&
+        std::find(B.edge_tag.begin() + B.vert_begin[b], B.edge_tag.begin() + B.vert_begin[b + 1],
+                  joints) == B.edge_tag.begin() + B.vert_begin[b + 1])
+      continue;
     out.push_back(b);
   }
   (void)all;

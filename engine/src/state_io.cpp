@@ -14,7 +14,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 2;
+constexpr uint32_t kVersion = 3;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -104,11 +104,12 @@ void fields(IO& io, auto& m) {
     io.vec(*v);
   io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
   io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);
+  io.vec(B.edge_tag);
   io.vec(B.group), io.vec(B.material), io.vec(B.id);
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.slot), io.vec(C.kind), io.vec(C.feature),
       io.vec(C.flags);
-  io.vec(C.joint), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
+  io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
   io.vec(C.shear_disp);
   io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
@@ -128,6 +129,10 @@ void fields(IO& io, auto& m) {
   io.pod(count);
   m.groups.resize(count);
   for (auto& g : m.groups) io.str(g);
+  count = m.joint_tags.size();
+  io.pod(count);
+  m.joint_tags.resize(count);
+  for (auto& t : m.joint_tags) io.str(t);
   auto& H = m.histories;
   io.pod(H.interval);
   count = H.series.size();

@@ -39,9 +39,11 @@ struct Blocks {
   std::vector<Vec2> local_vertex, local_arc_centre;
   std::vector<double> arc_radius, round_length;
   std::vector<uint8_t> convex;
-  // Per vertex: unit direction (block frame) and length of the edge that starts there.
+  // Per vertex: unit direction (block frame) and length of the edge that starts there, and the
+  // joint tag of that edge (the joint set or crack that made it; -1 none).
   std::vector<Vec2> local_edge_dir;
   std::vector<double> edge_length;
+  std::vector<int> edge_tag;
   // Per vertex, world cache refreshed after integration: corner, arc centre, edge direction.
   std::vector<Vec2> world_vertex, world_arc_centre, world_edge_dir;
   // Per block geometry: area, perimeter, largest centroid-to-vertex distance, and whether every
@@ -56,7 +58,10 @@ struct Blocks {
   uint32_t vertex_count(size_t b) const { return vert_begin[b + 1] - vert_begin[b]; }
   // Adds a block from counter-clockwise vertices; returns its index.
   size_t add(const std::vector<Vec2>& ccw_pts, double rounding, double density, int group_id,
-             int material_id);
+             int material_id, const std::vector<int>& edge_tags = {});
+  // Removes the blocks whose flag is set, keeping the order of the rest; returns the new index
+  // of every old block (-1 for removed ones).
+  std::vector<int> remove(const std::vector<uint8_t>& doomed);
   // Mass properties from area and density (after a material change).
   void set_density(size_t b, double density);
   // Recomputes the world vertex cache of one block from its position and rotation.

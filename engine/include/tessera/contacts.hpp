@@ -8,10 +8,11 @@
 //
 // Identity is (a, corner, b); contacts are sorted by unordered block pair and then by identity,
 // so that the contacts of one interface lie together. Each joint line of an interface (contacts
-// whose normals agree) shares its length between its contacts by the chapter's rule L = RQ1/2 + RQ2/2, with the neighbouring contacts along the
-// interface as Q1 and Q2 (all contacts within the tolerance count, touching or not, so that L
-// does not jump when one corner lifts); a lone contact, and never less than this, takes the chord
-// of its rounded arc across the opposite edge or arc (cases 2 and 3 of 5.2.2).
+// whose normals agree) shares its length between its contacts by the chapter's rule L = RQ1/2 +
+// RQ2/2, with the neighbouring contacts along the interface as Q1 and Q2 (all contacts within the
+// tolerance count, touching or not, so that L does not jump when one corner lifts); a lone contact,
+// and never less than this, takes the chord of its rounded arc across the opposite edge or arc
+// (cases 2 and 3 of 5.2.2).
 //
 // A corner sitting in the notch of a concave block touches two of its faces: it then has two
 // contacts (slots 0 and 1), each held to its own face until the next detection pass.
@@ -48,6 +49,7 @@ struct Contacts {
   std::vector<uint32_t> feature;
   std::vector<uint8_t> flags;
   std::vector<uint32_t> joint;  // index into the model's joint property table
+  std::vector<int> tag;         // joint tag of the face met when the contact was made
   // Geometry of the current cycle: unit normal (from b towards a), contact point, gap (negative
   // when overlapping), chord of the rounded arc, and the share of interface length.
   std::vector<Vec2> normal, point;
@@ -67,7 +69,8 @@ struct Contacts {
   // Appends a contact copied from another store (used when merging a detection pass).
   void push_from(const Contacts& src, size_t i);
   // Appends a fresh contact with no history.
-  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_, uint32_t joint_);
+  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_, uint32_t joint_,
+                int tag_);
 };
 
 }  // namespace tessera

@@ -33,10 +33,12 @@ struct Settings {
   double dt_fixed = 0.0;      // a user's time step (0: automatic)
 };
 
-// Joint property set used for contacts between two groups (-1 matches any group).
+// Joint property set used for contacts between two groups (-1 matches any group) along joints
+// of one tag (a joint set, crack or opening; -1 matches any).
 struct JointAssignment {
   int group_a = -1, group_b = -1;
   uint32_t joint = 0;
+  int tag = -1;
 };
 
 struct Model {
@@ -47,6 +49,7 @@ struct Model {
   std::vector<JointProperties> joints;
   std::vector<JointAssignment> joint_table;  // later entries win
   std::vector<std::string> groups;
+  std::vector<std::string> joint_tags;  // names of joint sets, cracks and openings
   Histories histories;
 
   // Clock.
@@ -70,8 +73,8 @@ struct Model {
   int group_index(const std::string& name, bool create);
   int material_index(const std::string& name) const;
   int joint_index(const std::string& name) const;
-  // Joint property set for a contact between two blocks, or -1 when none applies.
-  int joint_for(uint32_t a, uint32_t b) const;
+  // Joint property set for a contact between two blocks along a joint of a tag, or -1.
+  int joint_for(uint32_t a, uint32_t b, int tag = -1) const;
   // Contact tolerance in force: the user's, or the rounding length.
   double tolerance() const;
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tessera/checks.hpp"
 #include "tessera/model.hpp"
 #include "tessera/solver.hpp"
 #include "tessera/vtk_output.hpp"
@@ -107,6 +108,21 @@ class Interpreter {
   void cmd_restore(Args&);
   void cmd_call(Args&);
   void cmd_wall(Args&);
+  void make_block(std::vector<Vec2> pts, Args& a);
+  // Block generation (generation_commands.cpp).
+  void cmd_region(Args&);
+  void cmd_crack(Args&);
+  void cmd_jset(Args&);
+  void cmd_tunnel(Args&);
+  void cmd_voronoi(Args&);
+  void cmd_arch(Args&);
+  void cmd_delete(Args&);
+  void cmd_check(Args&);
+  // Runs the geometry checks; errors fail unless the script said to go on.
+  void run_checks(bool before_run);
+  // A mean and optional standard deviation written as MEAN or MEAN,SD.
+  std::pair<double, double> mean_sd(const std::string& text) const;
+  std::vector<size_t> optional_selection(Args& a);
 
   // Argument helpers (script.cpp).
   [[noreturn]] void fail(const std::string& message) const;
@@ -136,6 +152,8 @@ class Interpreter {
   int line_ = 0;
   int call_depth_ = 0;
   bool overlap_checked_ = false;
+  CheckLimits limits_;
+  bool proceed_on_errors_ = false;
   std::atomic<bool>* stop_ = nullptr;
   double progress_seconds_ = 2.0;
   RunSummary summary_;

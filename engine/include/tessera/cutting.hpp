@@ -1,0 +1,46 @@
+// Exact cutting of blocks by cracks, joint traces and opening outlines.
+//
+// All input edges and cut segments go into one CGAL arrangement with exact constructions, so
+// that intersections are computed once and shared by the blocks on both sides: a cut through a
+// vertex or along an existing edge leaves no sliver. A segment splits a block only where it
+// crosses it from boundary to boundary; a trace that ends inside a block leaves it whole (as in
+// UDEC). A piece that would enclose a hole (an opening cut inside a single block) is split by
+// a horizontal crack through the hole, since blocks are simple polygons. The pieces' vertices
+// are rounded to doubles and snapped together within a tolerance, the same way for every
+// piece, so that neighbours keep matching vertices. Only cutting.cpp includes CGAL.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+
+// An open polyline to cut along, with the joint tag its new edges get.
+struct CutLine {
+  std::vector<Vec2> points;
+  int tag = -1;
+};
+
+// A polygon with a tag per edge (the edge that starts at each vertex); -1 is "no tag".
+struct TaggedPolygon {
+  std::vector<Vec2> points;
+  std::vector<int> edge_tags;
+};
+
+struct CutResult {
+  std::vector<TaggedPolygon> pieces;  // counter-clockwise, in a canonical order
+  std::vector<size_t> parent;         // index of the input polygon each piece came from
+  size_t slivers_dropped = 0;         // pieces that snapping reduced to nothing
+};
+
+// Cuts the polygons (which must not overlap) along the lines. `snap`: vertices closer than this
+// become one. Edges along a cut take its tag; where cuts overlap, the later one's tag.
+CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::vector<CutLine>& cuts,
+                       double snap);
+
+// A point strictly inside a simple polygon (the middle of its widest horizontal chord).
+Vec2 interior_point(const std::vector<Vec2>& pts);
+
+}  // namespace tessera

@@ -1,0 +1,89 @@
+#include "tessera/checks.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <numeric>
+
+#include "tessera/solver.hpp"
+
+namespace tessera {
+
+std::string Finding::text() const {
+  if (block == 0) return std::string(error ? "error: " : "warning: ") + message;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s: block %d at (%.6g, %.6g): ", error ? "error" : "warning",
+                block, where.x(), where.y());
+  return buf + message;
+}
+
+std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
+  const Blocks& B = m.blocks;
+  const double d = m.settings.rounding;
+  const double min_area = lim.min_area > 0.0 ? lim.min_area : 4.0 * d * d;
+  const double min_thick = lim.min_thickness > 0.0 ? lim.min_thickness : d;
+  std::vector<Finding> out;
+  auto report = [&](bool error, size_t b, const std::string& msg) {
+    out.push_back({error, B.id[b], Vec2(B.x[b], B.y[b]), msg});
+  };
+  char buf[160];
+  for (size_t b = 0; b < B.size(); ++b) {
+    const double thickness = 2.0 * B.area[b] / B.perimeter[b];
+    if (B.area[b] < min_area) {
+      std::snprintf(buf, sizeof buf, "area %.3g is below the limit %.3g", B.area[b], min_area);
+      report(true, b, buf);
+    } else if (thickness < min_thick) {
+      std::snprintf(buf, sizeof buf, "thickness %.3g (2 area / perimeter) is below the limit %.3g",
+                    thickness, min_thick);
+      report(false, b, buf);
+    }
+    const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
+    for (uint32_t k = 0; k < n; ++k) {
+      const uint32_t v = v0 + k, prev = v0 + (k + n - 1) % n;
+      if (B.edge_length[v] < 2.0 * d) {
+        std::snprintf(buf, sizeof buf,
+                      "edge %u is %.3g long, shorter than twice the rounding length %.3g", k + 1,
+                      B.edge_length[v], d);
+        report(false, b, buf);
+      }
+      // Interior angle at a convex corner.
+      const Vec2 e1 = B.local_edge_dir[prev], e2 = B.local_edge_dir[v];
+      const double turn = std::atan2(cross(e1, e2), e1.dot(e2)) * 180.0 / std::numbers::pi;
+      if (B.convex[v] && 180.0 - turn < lim.min_angle) {
+        std::snprintf(
+            buf, sizeof buf,
+            "corner %u has an interior angle of %.3g degrees, too sharp to round (limit %.3g)",
+            k + 1, 180.0 - turn, lim.min_angle);
+        report(false, b, buf);
+      }
+    }
+  }
+  if (const std::string o = find_overlap(m); !o.empty()) out.push_back({true, 0, Vec2::Zero(), o});
+  // Blocks that no chain of contacts joins to a fixed block fall under gravity.
+  if (m.settings.gravity.norm() > 0.0 && B.size() > 0 && !m.joints.empty()) {
+    Model probe = m;
+    probe.cycle = 1;  // no bonding side effects; the probe is thrown away
+    try {
+      detect_contacts(probe);
+    } catch (const ModelError&) {
+      return out;  // missing joint properties: the run itself will say so
+    }
+    std::vector<size_t> root(B.size());
+    std::iota(root.begin(), root.end(), 0);
+    auto find = [&](size_t x) {
+      while (root[x] != x) x = root[x] = root[root[x]];
+      return x;
+    };
+    for (size_t i = 0; i < probe.contacts.size(); ++i)
+      root[find(probe.contacts.a[i])] = find(probe.contacts.b[i]);
+    std::vector<uint8_t> held(B.size(), 0);
+    for (size_t b = 0; b < B.size(); ++b)
+      if (B.fixity[b] & (kFixX | kFixY)) held[find(b)] = 1;
+    for (size_t b = 0; b < B.size(); ++b)
+      if (!held[find(b)])
+        report(false, b, "nothing holds it up: no chain of contacts reaches a fixed block");
+  }
+  return out;
+}
+
+}  // namespace tessera

@@ -1,0 +1,271 @@
+// Script commands that generate and cut blocks, and the geometry checks.
+#include <algorithm>
+#include <cmath>
+
+#include "tessera/expr.hpp"
+#include "tessera/generators.hpp"
+#include "tessera/script.hpp"
+
+namespace tessera {
+
+namespace {
+// Distance along d from p to where it leaves the polygon (p inside), or 0 if it does not.
+double exit_distance(const Vec2& p, const Vec2& d, const std::vector<Vec2>& poly) {
+  double best = 0.0;
+  bool found = false;
+  for (size_t i = 0, n = poly.size(); i < n; ++i) {
+    const Vec2 &a = poly[i], e = poly[(i + 1) % n] - poly[i];
+    const double den = cross(d, e);
+    if (den == 0.0) continue;
+    const double t = cross(a - p, e) / den, s = cross(a - p, d) / den;
+    if (t > 0.0 && s >= 0.0 && s <= 1.0 && (!found || t < best)) best = t, found = true;
+  }
+  return best;
+}
+}  // namespace
+
+std::pair<double, double> Interpreter::mean_sd(const std::string& text) const {
+  const auto parts = split_top_level(text);
+  if (parts.size() > 2) fail("'" + text + "' should be MEAN or MEAN,SD");
+  const double sd = parts.size() == 2 ? num(parts[1]) : 0.0;
+  if (sd < 0.0) fail("a standard deviation cannot be negative ('" + text + "')");
+  return {num(parts[0]), sd};
+}
+
+std::vector<size_t> Interpreter::optional_selection(Args& a) {
+  for (const char* k : {"x", "y", "group", "block", "at", "circle", "polygon", "joints"})
+    for (const auto& kv : a.keys)
+      if (kv.first == k) return select(a, true);
+  if (std::find(a.words.begin(), a.words.end(), "all") != a.words.end()) return select(a, true);
+  return {};
+}
+
+void Interpreter::cmd_region(Args& a) {
+  if (a.words.size() != 2)
+    fail("write 'region X0,Y0 X1,Y1 [group=G] [material=M]' (two opposite corners)");
+  const Vec2 p = point(a.words[0]), q = point(a.words[1]);
+  const Vec2 lo = p.cwiseMin(q), hi = p.cwiseMax(q);
+  make_block({lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())}, a);
+}
+
+void Interpreter::cmd_crack(Args& a) {
+  std::vector<Vec2> pts;
+  std::vector<std::string> rest;
+  for (const auto& w : a.words) {
+    if (w == "all")
+      rest.push_back(w);
+    else
+      pts.push_back(point(w));
+  }
+  a.words = rest;
+  if (pts.size() < 2) fail("write 'crack X,Y X,Y [X,Y ...]' with at least two points");
+  std::string name = "crack" + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", name);
+  const auto sel = optional_selection(a);
+  done(a);
+  const int tag = joint_tag(model_, name);
+  cut_blocks(model_, {CutLine{pts, tag}}, sel);
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_jset(Args& a) {
+  JointSetSpec j;
+  std::string v;
+  if (!take(a, "angle", v)) missing(a, "angle", "'jset'");
+  std::tie(j.angle, j.angle_sd) = mean_sd(v);
+  if (!take(a, "spacing", v)) missing(a, "spacing", "'jset'");
+  std::tie(j.spacing, j.spacing_sd) = mean_sd(v);
+  if (j.spacing <= 0.0) fail("the joint spacing must be positive");
+  if (take(a, "trace", v)) std::tie(j.trace, j.trace_sd) = mean_sd(v);
+  if (take(a, "gap", v)) std::tie(j.gap, j.gap_sd) = mean_sd(v);
+  if (j.trace < 0.0 || j.gap < 0.0) fail("trace length and gap cannot be negative");
+  if (take(a, "origin", v)) j.origin = point(v);
+  if (take(a, "seed", v)) j.seed = static_cast<uint64_t>(integer(v, 0));
+  const auto it = std::find(a.words.begin(), a.words.end(), "extend");
+  if (it != a.words.end()) j.extend = true, a.words.erase(it);
+  std::string name = "jset" + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", name);
+  auto sel = optional_selection(a);
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
+  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
+  std::vector<size_t> chosen = sel;
+  if (chosen.empty())
+    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
+  // Box of the blocks to cut.
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (size_t b : chosen)
+    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const int tag = joint_tag(model_, name);
+  std::vector<CutLine> traces = joint_set_traces(j, lo, hi, tag);
+  if (j.extend) {
+    // A trace end inside a block runs on to the block's boundary.
+    for (CutLine& t : traces)
+      for (int end = 0; end < 2; ++end) {
+        Vec2& p = t.points[static_cast<size_t>(end)];
+        const Vec2 dir = (p - t.points[static_cast<size_t>(1 - end)]).normalized();
+        for (size_t b : chosen) {
+          const auto poly = model_.blocks.world_polygon(b);
+          if (!point_in_polygon(p, poly)) continue;
+          p += dir * exit_distance(p, dir, poly);
+          break;
+        }
+      }
+  }
+  const size_t dropped = cut_blocks(model_, traces, sel);
+  if (dropped)
+    log("jset: " + std::to_string(dropped) + " sliver(s) below the snapping tolerance dropped");
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_tunnel(Args& a) {
+  if (a.words.empty()) fail("write 'tunnel circle|horseshoe|rectangle|polygon ...'");
+  const std::string shape = a.words[0];
+  a.words.erase(a.words.begin());
+  std::vector<Vec2> outline;
+  std::string v;
+  if (shape == "circle") {
+    if (!take(a, "centre", v)) missing(a, "centre", "'tunnel circle'");
+    const Vec2 c = point(v);
+    double r = 0.0, n = 24;
+    if (!take_num(a, "radius", r)) missing(a, "radius", "'tunnel circle'");
+    take_num(a, "segments", n);
+    if (r <= 0.0 || n < 3) fail("a circle needs a positive radius and at least 3 segments");
+    outline = circle_outline(c, r, static_cast<int>(n));
+  } else if (shape == "horseshoe") {
+    if (!take(a, "centre", v)) missing(a, "centre", "'tunnel horseshoe' (the middle of its floor)");
+    const Vec2 c = point(v);
+    double w = 0.0, h = 0.0, n = 12;
+    if (!take_num(a, "width", w)) missing(a, "width", "'tunnel horseshoe'");
+    if (!take_num(a, "height", h)) missing(a, "height", "'tunnel horseshoe'");
+    take_num(a, "segments", n);
+    if (w <= 0.0 || h < 0.5 * w || n < 2)
+      fail("a horseshoe needs width > 0, height >= width/2 and segments >= 2");
+    outline = horseshoe_outline(c, w, h, static_cast<int>(n));
+  } else if (shape == "rectangle") {
+    if (a.words.size() != 2) fail("write 'tunnel rectangle X0,Y0 X1,Y1'");
+    const Vec2 p = point(a.words[0]), q = point(a.words[1]);
+    outline = {p, Vec2(q.x(), p.y()), q, Vec2(p.x(), q.y())};
+    a.words.clear();
+  } else if (shape == "polygon") {
+    for (const auto& w : a.words) outline.push_back(point(w));
+    a.words.clear();
+    if (const std::string why = polygon_problem(outline); !why.empty()) fail("the opening: " + why);
+  } else {
+    fail("'" + shape + "' is not an opening shape" +
+         suggest(shape, {"circle", "horseshoe", "rectangle", "polygon"}));
+  }
+  std::string name = "tunnel" + std::to_string(model_.joint_tags.size() + 1), group;
+  take(a, "name", name);
+  if (!take(a, "group", group)) group = name;
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
+  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
+  outline.push_back(outline.front());
+  cut_blocks(model_, {CutLine{outline, joint_tag(model_, name)}}, {});
+  // The blocks inside the outline form a group, ready to be excavated with 'delete'.
+  const int g = model_.group_index(group, true);
+  outline.pop_back();
+  for (size_t b = 0; b < model_.blocks.size(); ++b)
+    if (point_in_polygon(Vec2(model_.blocks.x[b], model_.blocks.y[b]), outline))
+      model_.blocks.group[b] = g;
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_voronoi(Args& a) {
+  double size = 0.0, seed = 1;
+  if (!take_num(a, "size", size)) missing(a, "size", "'voronoi' (mean cell size)");
+  take_num(a, "seed", seed);
+  if (size <= 0.0) fail("the cell size must be positive");
+  std::string name = "voronoi" + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", name);
+  auto sel = optional_selection(a);
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
+  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
+  std::vector<size_t> chosen = sel;
+  if (chosen.empty())
+    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (size_t b : chosen)
+    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  if ((hi - lo).x() * (hi - lo).y() / (size * size) > 2e5)
+    fail("that would make more than 200,000 cells");
+  cut_blocks(model_,
+             voronoi_traces(lo, hi, size, static_cast<uint64_t>(seed), joint_tag(model_, name)),
+             sel);
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_arch(Args& a) {
+  if (model_.settings.rounding <= 0.0)
+    fail("set the rounding length with 'round D' before the first block");
+  ArchSpec s;
+  std::string v;
+  if (!take(a, "centre", v)) missing(a, "centre", "'arch' (centre of the intrados)");
+  s.centre = point(v);
+  if (!take_num(a, "radius", s.radius)) missing(a, "radius", "'arch' (intrados radius)");
+  if (!take_num(a, "thickness", s.thickness)) missing(a, "thickness", "'arch'");
+  double n = 0;
+  if (!take_num(a, "voussoirs", n)) missing(a, "voussoirs", "'arch'");
+  s.voussoirs = static_cast<int>(n);
+  take_num(a, "half_angle", s.half_angle);
+  take_num(a, "abutment", s.abutment);
+  if (take(a, "group", v)) s.group = model_.group_index(v, true);
+  s.abutment_group = s.group;
+  if (take(a, "abutment_group", v)) s.abutment_group = model_.group_index(v, true);
+  if (take(a, "material", v)) {
+    s.material = model_.material_index(v);
+    if (s.material < 0) fail("there is no material '" + v + "' (define it first)");
+  }
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
+  if (s.radius <= 0.0 || s.thickness <= 0.0 || n < 1 || n != std::floor(n))
+    fail("an arch needs radius > 0, thickness > 0 and a whole number of voussoirs");
+  if (s.half_angle <= 0.0 || s.half_angle > 90.0) fail("half_angle must be in (0, 90] degrees");
+  add_arch(model_, s);
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_delete(Args& a) {
+  const auto sel = select(a);
+  done(a);
+  delete_blocks(model_, sel);
+  log("delete: " + std::to_string(sel.size()) + " block(s) removed");
+}
+
+void Interpreter::cmd_check(Args& a) {
+  if (a.words.size() == 1 && (a.words[0] == "proceed" || a.words[0] == "strict")) {
+    proceed_on_errors_ = a.words[0] == "proceed";
+    done(a);
+    return;
+  }
+  take_num(a, "min_area", limits_.min_area);
+  take_num(a, "min_thickness", limits_.min_thickness);
+  take_num(a, "min_angle", limits_.min_angle);
+  if (!a.words.empty())
+    fail("unexpected word '" + a.words[0] + "' (write 'check', 'check proceed' or 'check strict')");
+  done(a);
+  for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
+  run_checks(false);
+}
+
+void Interpreter::run_checks(bool before_run) {
+  const std::vector<Finding> found = check_geometry(model_, limits_);
+  size_t errors = 0;
+  std::string first_error;
+  for (const Finding& f : found) {
+    log(file_ + ":" + std::to_string(line_) + ": " + f.text());
+    if (f.error && !errors++) first_error = f.text();
+  }
+  if (!before_run) {
+    log("check: " + std::to_string(found.size()) + " finding(s), " + std::to_string(errors) +
+        " error(s)");
+    return;
+  }
+  if (errors && !proceed_on_errors_)
+    fail(first_error + (errors > 1 ? " (and " + std::to_string(errors - 1) + " more)" : "") +
+         "; the run does not start (fix the model, or write 'check proceed' to run anyway)");
+}
+
+}  // namespace tessera
