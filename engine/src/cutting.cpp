@@ -261,7 +261,8 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
   for (Raw& r : raw) {
     for (Vec2& v : r.poly.points) v = snapped(v);
     clean(r.poly);
-    if (r.poly.points.size() < 3 || signed_area(r.poly.points) <= 0.0) {
+    // Slivers: round-off of near-degenerate cuts, far below any block a model can use.
+    if (r.poly.points.size() < 3 || signed_area(r.poly.points) <= 1e-12 * size * size) {
       ++out.slivers_dropped;
       continue;
     }

@@ -33,7 +33,7 @@ std::pair<double, double> Interpreter::mean_sd(const std::string& text) const {
 }
 
 std::vector<size_t> Interpreter::optional_selection(Args& a) {
-  for (const char* k : {"x", "y", "group", "block", "at", "circle", "polygon", "joints"})
+  for (const char* k : {"x", "y", "group", "block", "at", "circle", "polygon", "joints", "smaller"})
     for (const auto& kv : a.keys)
       if (kv.first == k) return select(a, true);
   if (std::find(a.words.begin(), a.words.end(), "all") != a.words.end()) return select(a, true);
@@ -107,7 +107,12 @@ void Interpreter::cmd_jset(Args& a) {
         for (size_t b : chosen) {
           const auto poly = model_.blocks.world_polygon(b);
           if (!point_in_polygon(p, poly)) continue;
-          p += dir * exit_distance(p, dir, poly);
+          // Just past the boundary, so that the trace crosses it; exactly through a corner
+          // if it passes that close to one, so that no sliver is cut off the corner.
+          const double size = 2.0 * model_.blocks.bound_radius[b];
+          p += dir * (exit_distance(p, dir, poly) + 1e-7 * size);
+          for (const Vec2& corner : poly)
+            if ((corner - p).norm() < 1e-5 * size) p = corner;
           break;
         }
       }

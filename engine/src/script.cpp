@@ -294,6 +294,9 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (joints < 0) fail("there are no joints named '" + v + "'" + suggest(v, model_.joint_tags));
     any = true;
   }
+  // Blocks smaller than an area (to clear out the crumbs a random joint pattern leaves).
+  double smaller = -1.0;
+  if (take(a, "smaller", v)) smaller = num(v), any = true;
   auto& words = a.words;
   const auto it = std::find(words.begin(), words.end(), "all");
   if (it != words.end()) words.erase(it), all = any = true;
@@ -307,6 +310,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;
     if (group >= -1 && B.group[b] != group) continue;
     if (B.x[b] < x0 || B.x[b] > x1 || B.y[b] < y0 || B.y[b] > y1) continue;
+    if (smaller >= 0.0 && B.area[b] >= smaller) continue;
     if (cr >= 0.0 && std::hypot(B.x[b] - cx, B.y[b] - cy) > cr) continue;
     if (!inside.empty() && !point_in_polygon(Vec2(B.x[b], B.y[b]), inside)) continue;
     if (joints >= 0 &&

@@ -99,6 +99,8 @@ void write_contacts(const Model& m, const std::string& path) {
   array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
   array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(C.flags[i]); });
+  array(out, "Int32", "joint_properties", 1, n, [&](size_t i) { return C.joint[i]; });
+  array(out, "Int32", "joint_tag", 1, n, [&](size_t i) { return C.tag[i]; });
   array(out, "Int32", "block_a", 1, n, [&](size_t i) { return B.id[C.a[i]]; });
   array(out, "Int32", "block_b", 1, n, [&](size_t i) { return B.id[C.b[i]]; });
   array(out, "Float64", "normal", 3, n, [&](size_t k) {

@@ -1,0 +1,218 @@
+// Block generation: exact cutting keeps every bit of area, no slivers, the same blocks for the
+// same seed; geometry checks name the block at fault.
+#include <QtTest>
+#include <cmath>
+
+#include "support.hpp"
+#include "tessera/parallel.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+const char* kRock =
+    "round 0.01\n"
+    "material define rock density=2500\n"
+    "joint define j kn=1e10 ks=1e10 friction=35\n"
+    "joint assign j\n";
+
+double total_area(const Model& m) {
+  double a = 0.0;
+  for (double x : m.blocks.area) a += x;
+  return a;
+}
+
+// Area of each block recomputed from its world vertices (independent of the stored value).
+double polygon_area_sum(const Model& m) {
+  double a = 0.0;
+  for (size_t b = 0; b < m.blocks.size(); ++b) a += signed_area(m.blocks.world_polygon(b));
+  return a;
+}
+
+std::vector<double> all_vertices(const Model& m) {
+  std::vector<double> v;
+  for (const Vec2& p : m.blocks.world_vertex) v.push_back(p.x()), v.push_back(p.y());
+  return v;
+}
+
+std::string messages(ScriptRun& r, const std::string& text) {
+  std::string log;
+  r.interp = std::make_unique<Interpreter>(r.dir.path().toStdString(),
+                                           [&](const std::string& s) { log += s + "\n"; });
+  r.run(text);
+  return log;
+}
+}  // namespace
+
+class TestGeneration : public QObject {
+  Q_OBJECT
+ private slots:
+  void jointSetOfKnownSpacing() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "region 0,0 10,10 material=rock\njset angle=0 spacing=1 origin=0,0\n");
+    QCOMPARE(r.model().blocks.size(), size_t(10));
+    QVERIFY(std::abs(total_area(r.model()) - 100.0) < 1e-9 * 100.0);
+    // Every block is a 10 x 1 slab.
+    for (double a : r.model().blocks.area) QVERIFY(std::abs(a - 10.0) < 1e-9);
+  }
+  void everyGeneratorKeepsTheArea_data() {
+    QTest::addColumn<QString>("cut");
+    QTest::newRow("two sets with gaps")
+        << "jset angle=25,3 spacing=1.5,0.3 trace=5,1 gap=1,0.2 seed=7\n"
+           "jset angle=-70 spacing=2,0.4 trace=4 gap=2 seed=8 extend";
+    QTest::newRow("voronoi") << "voronoi size=2 seed=3";
+    QTest::newRow("tunnel in jointed rock")
+        << "jset angle=30 spacing=2.2\ntunnel circle centre=10,10 radius=3 segments=32";
+    QTest::newRow("horseshoe and crack")
+        << "tunnel horseshoe centre=10,4 width=5 height=6\ncrack 0,15 20,17 23,12";
+  }
+  void everyGeneratorKeepsTheArea() {
+    QFETCH(QString, cut);
+    ScriptRun r;
+    r.run(std::string(kRock) + "region 0,0 20,20 material=rock\n" + cut.toStdString());
+    const Model& m = r.model();
+    qInfo("%zu blocks", m.blocks.size());
+    QVERIFY(m.blocks.size() > 3);
+    QVERIFY(std::abs(total_area(m) - 400.0) < 1e-9 * 400.0);
+    QVERIFY(std::abs(polygon_area_sum(m) - 400.0) < 1e-9 * 400.0);
+    for (double a : m.blocks.area) QVERIFY(a > 1e-6);
+  }
+  void sameSeedSameBlocks() {
+    const std::string text =
+        std::string(kRock) +
+        "region 0,0 20,20 material=rock\n"
+        "jset angle=40,5 spacing=2,0.5 trace=6,2 gap=1,0.5 seed=11\nvoronoi size=3 seed=5 x=0,10\n";
+    ScriptRun a, b, c;
+    a.run(text);
+    b.run(text);
+    set_thread_count(2);
+    c.run(text);
+    set_thread_count(1);
+    QVERIFY(all_vertices(a.model()) == all_vertices(b.model()));
+    QVERIFY(all_vertices(a.model()) == all_vertices(c.model()));
+    ScriptRun other;
+    other.run(std::string(kRock) +
+              "region 0,0 20,20 material=rock\n"
+              "jset angle=40,5 spacing=2,0.5 trace=6,2 gap=1,0.5 seed=12\nvoronoi size=3 seed=5 "
+              "x=0,10\n");
+    QVERIFY(all_vertices(a.model()) != all_vertices(other.model()));
+  }
+  void circleHasThePolygonsArea() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "region 0,0 10,10 material=rock\ntunnel circle centre=5,5 radius=2 segments=24 "
+          "group=hole\n");
+    Model& m = r.model();
+    double inside = 0.0;
+    for (size_t b = 0; b < m.blocks.size(); ++b)
+      if (m.blocks.group[b] == m.group_index("hole", false)) inside += m.blocks.area[b];
+    const double exact = 0.5 * 24 * 4 * std::sin(2 * M_PI / 24);
+    QVERIFY(std::abs(inside - exact) < 1e-9 * exact);
+    // The ring around the opening is split into simple blocks.
+    QCOMPARE(m.blocks.size(), size_t(3));
+  }
+  void cutsThroughVerticesAndAlongEdgesLeaveNoSlivers() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "region 0,0 2,1 material=rock\n"
+          "crack 1,-1 1,2\n"     // splits in two unit squares
+          "crack 1,0 1,1\n"      // along the new edge: nothing more
+          "crack -1,-1 3,3\n");  // corner to corner of the left square, touching the right one
+    const Model& m = r.model();
+    QCOMPARE(m.blocks.size(), size_t(3));
+    std::vector<double> areas = m.blocks.area;
+    std::sort(areas.begin(), areas.end());
+    QVERIFY(std::abs(areas[0] - 0.5) < 1e-12 && std::abs(areas[1] - 0.5) < 1e-12 &&
+            std::abs(areas[2] - 1) < 1e-12);
+  }
+  void traceEndingInsideLeavesTheBlockWhole() {
+    ScriptRun r;
+    r.run(std::string(kRock) + "region 0,0 4,2 material=rock\ncrack -1,1 2,1\n");
+    QCOMPARE(r.model().blocks.size(), size_t(1));
+    ScriptRun e;
+    // Traces 3 long with 0.5 bridges along y = 1 never cross the 4 m block, unless extended.
+    const std::string set =
+        std::string(kRock) +
+        "region 0,0 4,2 material=rock\njset angle=0 spacing=10 origin=0,1 trace=3 gap=0.5";
+    ScriptRun plain;
+    plain.run(set);
+    QCOMPARE(plain.model().blocks.size(), size_t(1));
+    e.run(set + " extend");
+    QCOMPARE(e.model().blocks.size(), size_t(2));
+  }
+  void jointSetsGetTheirOwnProperties() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "joint define weak kn=1e10 ks=1e10 friction=10\n"
+          "region 0,0 4,4 material=rock\njset angle=0 spacing=1 origin=0,0.5 name=bedding\n"
+          "crack 2,-1 2,5 name=fault\njoint assign weak joints=bedding\n"
+          "group base y=0,1\nfix group=base\ngravity 0 -9.81\nstep 1\n");
+    const Model& m = r.model();
+    int weak = 0, other = 0;
+    for (size_t i = 0; i < m.contacts.size(); ++i) {
+      const bool horizontal = std::abs(m.contacts.normal[i].y()) > 0.9;
+      (m.joints[m.contacts.joint[i]].name == "weak" ? weak : other) += 1;
+      if (m.joints[m.contacts.joint[i]].name == "weak") QVERIFY(horizontal);
+    }
+    QVERIFY(weak > 0 && other > 0);
+  }
+  void archOfVoussoirs() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "arch centre=0,0 radius=2 thickness=0.3 voussoirs=15 abutment=0.5 material=rock "
+          "group=arch abutment_group=abut\n");
+    QCOMPARE(r.model().blocks.size(), size_t(17));
+    // Area of the ring of chords plus the two abutments.
+    const double ring = 0.5 * (2.3 * 2.3 - 2 * 2) * 15 * std::sin(M_PI / 15);
+    QVERIFY(std::abs(total_area(r.model()) - ring - 2 * 0.3 * 0.5) < 1e-9);
+  }
+  void deleteExcavatesMidRun() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "region 0,0 6,3 material=rock\njset angle=90 spacing=1 origin=0,0\n"
+          "region -1,-1 7,-1e-9 group=base material=rock\n"
+          "fix group=base\ngravity 0 -9.81\nhistory ydisp at=2.5,1.5 label=kept\nhistory ydisp "
+          "at=3.5,1.5 label=gone\n"
+          "solve ratio=1e-5\ndelete at=3.5,1.5\nstep 50\n");
+    const Model& m = r.model();
+    QCOMPARE(m.blocks.size(), size_t(6));
+    QVERIFY(std::isnan(m.histories.values.back()));
+    QVERIFY(!std::isnan(m.histories.values[m.histories.values.size() - 2]));
+    QVERIFY(m.ratio < 1e-3);
+  }
+  void checksNameTheBlock_data() {
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QString>("expect");
+    QTest::newRow("small") << "region 0,0 0.015,0.015 material=rock"
+                           << "error: block 1 at (0.0075, 0.0075): area";
+    QTest::newRow("thin") << "block 0,0 3,0 3,0.008 0,0.008 material=rock"
+                          << "warning: block 1 at (1.5, 0.004): thickness";
+    QTest::newRow("short edge") << "block 0,0 1,0 1,1 0.99,1 0,0.5 material=rock"
+                                << "block 1 at (0.5";
+    QTest::newRow("sharp corner") << "block 0,0 5,0 5,0.3 material=rock"
+                                  << "interior angle of 3.43";
+    QTest::newRow("overlap") << "region 0,0 1,1 material=rock\nregion 0.5,0.5 2,2 material=rock"
+                             << "error: blocks 1 and 2 overlap";
+    QTest::newRow("floating") << "region 0,0 1,1 material=rock\ngravity 0 -9.81"
+                              << "nothing holds it up";
+  }
+  void checksNameTheBlock() {
+    QFETCH(QString, model);
+    QFETCH(QString, expect);
+    ScriptRun r;
+    const std::string log = messages(r, std::string(kRock) + model.toStdString() + "\ncheck");
+    QVERIFY2(log.find(expect.toStdString()) != std::string::npos, log.c_str());
+  }
+  void runRefusesToStartOnAnError() {
+    ScriptRun r;
+    QVERIFY_THROWS_EXCEPTION(
+        ScriptError, r.run(std::string(kRock) + "region 0,0 0.015,0.015 material=rock\nstep 1"));
+    ScriptRun go;
+    go.run(std::string(kRock) + "region 0,0 0.015,0.015 material=rock\ncheck proceed\nstep 1");
+    QCOMPARE(go.model().cycle, uint64_t(1));
+  }
+};
+
+QTEST_APPLESS_MAIN(TestGeneration)
+#include "test_generation.moc"
