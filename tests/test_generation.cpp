@@ -157,6 +157,47 @@ class TestGeneration : public QObject {
     }
     QVERIFY(weak > 0 && other > 0);
   }
+  void joinMakesOneBlock() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "region 0,0 2,2 material=rock\ncrack 1,-1 1,3\ncrack -1,1 3,1\n"
+          "join x=0,2 y=0,1\njoin x=0,1\n");
+    // Four squares; the bottom two joined, then the top left square added: an L and a square.
+    QCOMPARE(r.model().blocks.size(), size_t(2));
+    const Model& m = r.model();
+    const size_t l = m.blocks.area[0] > m.blocks.area[1] ? 0 : 1;
+    QVERIFY(std::abs(m.blocks.area[l] - 3.0) < 1e-12);
+    QCOMPARE(m.blocks.vertex_count(l), 6u);
+    QVERIFY(!m.blocks.all_convex[l]);
+    ScriptRun apart;
+    QVERIFY_THROWS_EXCEPTION(
+        ScriptError, apart.run(std::string(kRock) + "region 0,0 1,1 material=rock\n"
+                                                    "region 2,0 3,1 material=rock\njoin all"));
+  }
+  void wallBedAndHeadJointsTakeTheirOwnProperties() {
+    ScriptRun r;
+    r.run(std::string(kRock) +
+          "joint define bed kn=1e10 ks=1e10 friction=20\njoint define head kn=1e10 ks=1e10 "
+          "friction=45\n"
+          "region -1,-1 5,0 group=base material=rock\nfix group=base\n"
+          "wall brick=1,0.5 courses=3 bricks=4 material=rock\n"
+          "joint assign bed joints=wall_bed\njoint assign head joints=wall_head\ngravity 0 "
+          "-9.81\nstep 1\n");
+    const Model& m = r.model();
+    int beds = 0, heads = 0;
+    for (size_t i = 0; i < m.contacts.size(); ++i) {
+      const std::string& name = m.joints[m.contacts.joint[i]].name;
+      const bool horizontal = std::abs(m.contacts.normal[i].y()) > 0.9;
+      if (horizontal) {
+        QCOMPARE(name, std::string("bed"));
+        ++beds;
+      } else if (std::abs(m.contacts.normal[i].x()) > 0.9) {
+        QCOMPARE(name, std::string("head"));
+        ++heads;
+      }
+    }
+    QVERIFY(beds > 10 && heads > 5);
+  }
   void archOfVoussoirs() {
     ScriptRun r;
     r.run(std::string(kRock) +

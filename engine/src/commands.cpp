@@ -43,6 +43,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"voronoi", &Interpreter::cmd_voronoi},
       {"arch", &Interpreter::cmd_arch},
       {"delete", &Interpreter::cmd_delete},
+      {"join", &Interpreter::cmd_join},
       {"check", &Interpreter::cmd_check},
   };
   return h;
@@ -283,7 +284,12 @@ void Interpreter::cmd_wall(Args& a) {
     w.material = model_.material_index(v);
     if (w.material < 0) fail("there is no material '" + v + "' (define it first)");
   }
+  // Bed and head joints are named for assigning mortar properties: NAME_bed, NAME_head.
+  std::string name = "wall";
+  take(a, "name", name);
   done(a);
+  w.bed_tag = joint_tag(model_, name + "_bed");
+  w.head_tag = joint_tag(model_, name + "_head");
   add_running_bond_wall(model_, w);
   overlap_checked_ = false;
 }

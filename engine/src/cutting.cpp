@@ -272,4 +272,69 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
   return out;
 }
 
+TaggedPolygon join_polygons(const std::vector<TaggedPolygon>& polygons, std::string& why) {
+  // The arrangement of all edges: the faces inside the polygons merge when the edges between two
+  // of them (an edge with input polygons on both sides) are left out of the outline.
+  std::vector<Curve> curves;
+  for (const TaggedPolygon& p : polygons)
+    for (size_t k = 0, n = p.points.size(); k < n; ++k) {
+      const Vec2 &a = p.points[k], &b = p.points[(k + 1) % n];
+      if (a != b)
+        curves.emplace_back(K::Segment_2(Point(a.x(), a.y()), Point(b.x(), b.y())), p.edge_tags[k]);
+    }
+  Arrangement arr;
+  CGAL::insert(arr, curves.begin(), curves.end());
+  // A face belongs to the union if its interior point lies in an input polygon.
+  auto inside = [&](Face f) {
+    if (f->is_unbounded()) return false;
+    std::vector<Vec2> pts;
+    for (Halfedge e : boundary(f->outer_ccb()))
+      pts.emplace_back(CGAL::to_double(e->source()->point().x()),
+                       CGAL::to_double(e->source()->point().y()));
+    if (pts.size() < 3) return false;
+    const Vec2 q = interior_point(pts);
+    for (const TaggedPolygon& p : polygons)
+      if (point_in_polygon(q, p.points)) return true;
+    return false;
+  };
+  // The outline: halfedges with the union on their left and the outside on their right.
+  const Arrangement& carr = arr;
+  std::map<Arrangement::Vertex_const_handle, Halfedge> next_from;
+  size_t count = 0;
+  for (auto e = carr.halfedges_begin(); e != carr.halfedges_end(); ++e)
+    if (inside(e->face()) && !inside(e->twin()->face())) {
+      if (next_from.count(e->source())) {
+        why = "the blocks meet at a single point; the union is not a simple polygon";
+        return {};
+      }
+      next_from[e->source()] = e, ++count;
+    }
+  if (count == 0) {
+    why = "the blocks enclose nothing";
+    return {};
+  }
+  // Walk the outline once around; every outline edge must be on it.
+  TaggedPolygon out;
+  Halfedge start = next_from.begin()->second, e = start;
+  size_t walked = 0;
+  do {
+    out.points.emplace_back(CGAL::to_double(e->source()->point().x()),
+                            CGAL::to_double(e->source()->point().y()));
+    out.edge_tags.push_back(edge_tag(e));
+    const auto it = next_from.find(e->target());
+    if (it == next_from.end() || ++walked > count) break;
+    e = it->second;
+  } while (e != start);
+  if (walked != count) {
+    why = "the blocks do not form one piece without holes (they must touch along edges)";
+    return {};
+  }
+  clean(out);
+  if (signed_area(out.points) < 0.0) {
+    why = "the outline runs the wrong way";
+    return {};
+  }
+  return out;
+}
+
 }  // namespace tessera

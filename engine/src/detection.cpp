@@ -166,8 +166,17 @@ void detect_contacts(Model& m) {
       const uint32_t e = f.hit.feature;
       const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
       const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
-      const int tag =
-          f.hit.kind == kCornerEdge ? B.edge_tag[e] : std::max(B.edge_tag[e], B.edge_tag[prev]);
+      int tag = std::max(B.edge_tag[e], B.edge_tag[prev]);
+      if (f.hit.kind == kCornerEdge) {
+        // The face met, and the owner's edge that lies along it (a joint is tagged on either
+        // side, or only on the side a generator made).
+        const uint32_t o0 = B.vert_begin[f.owner], no = B.vertex_count(f.owner);
+        const uint32_t oprev = o0 + (f.corner - o0 + no - 1) % no;
+        const Vec2& u = B.world_edge_dir[e];
+        const bool in_along =
+            std::abs(B.world_edge_dir[oprev].dot(u)) >= std::abs(B.world_edge_dir[f.corner].dot(u));
+        tag = std::max(B.edge_tag[e], B.edge_tag[in_along ? oprev : f.corner]);
+      }
       const int joint = m.joint_for(f.owner, f.other, tag);
       if (joint < 0) {
         const auto group_name = [&](uint32_t b) {

@@ -232,6 +232,13 @@ void Interpreter::cmd_arch(Args& a) {
   overlap_checked_ = false;
 }
 
+void Interpreter::cmd_join(Args& a) {
+  const auto sel = select(a);
+  done(a);
+  join_blocks(model_, sel);
+  overlap_checked_ = false;
+}
+
 void Interpreter::cmd_delete(Args& a) {
   const auto sel = select(a);
   done(a);

@@ -15,7 +15,7 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
     for (size_t k = 0; k + 1 < xs.size(); ++k) {
       const double x0 = w.origin.x() + xs[k], x1 = w.origin.x() + xs[k + 1];
       m.blocks.add({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, m.settings.rounding, rho, w.group,
-                   w.material);
+                   w.material, {w.bed_tag, w.head_tag, w.bed_tag, w.head_tag});
       ++added;
     }
   }
@@ -134,27 +134,12 @@ int joint_tag(Model& m, const std::string& name) {
   return static_cast<int>(m.joint_tags.size()) - 1;
 }
 
-size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
-  if (m.cycle > 0) throw ModelError("blocks can be cut only before the first cycle");
-  for (const auto& s : m.histories.series)
-    if (s.block >= 0)
-      throw ModelError("cut blocks before defining block histories (they would be renumbered)");
-  const Blocks old = m.blocks;
-  std::vector<uint8_t> in(old.size(), chosen.empty() ? 1 : 0);
-  for (size_t b : chosen) in[b] = 1;
-  std::vector<TaggedPolygon> polys;
-  std::vector<size_t> from;
-  double size = 0.0;
-  for (size_t b = 0; b < old.size(); ++b) {
-    size = std::max(size, 2.0 * old.bound_radius[b]);
-    if (!in[b]) continue;
-    polys.push_back(
-        {old.world_polygon(b),
-         {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
-    from.push_back(b);
-  }
-  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0));
-  // Rebuild: the blocks left alone first, in order, then the pieces; state comes from the parent.
+// Rebuilds the model's blocks: those not flagged in `in` first, in order, then the new polygons;
+// each new block takes group, material, fixity and velocities from its parent. Blocks are
+// renumbered and contacts made anew.
+static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_t>& in,
+                           const std::vector<TaggedPolygon>& pieces,
+                           const std::vector<size_t>& parents) {
   m.blocks = Blocks{};
   auto copy_state = [&](size_t parent) {
     Blocks& B = m.blocks;
@@ -175,17 +160,63 @@ size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<
         {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]});
     copy_state(b);
   }
-  for (size_t k = 0; k < r.pieces.size(); ++k) {
-    const size_t parent = from[r.parent[k]];
-    m.blocks.add(r.pieces[k].points, m.settings.rounding, density(old.material[parent]),
-                 old.group[parent], old.material[parent], r.pieces[k].edge_tags);
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const size_t parent = parents[k];
+    m.blocks.add(pieces[k].points, m.settings.rounding, density(old.material[parent]),
+                 old.group[parent], old.material[parent], pieces[k].edge_tags);
     copy_state(parent);
   }
   m.contacts.clear();
   m.det_x.clear();
   m.touch();
   build_adjacency(m);
+}
+
+size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
+  if (m.cycle > 0) throw ModelError("blocks can be cut only before the first cycle");
+  for (const auto& s : m.histories.series)
+    if (s.block >= 0)
+      throw ModelError("cut blocks before defining block histories (they would be renumbered)");
+  const Blocks old = m.blocks;
+  std::vector<uint8_t> in(old.size(), chosen.empty() ? 1 : 0);
+  for (size_t b : chosen) in[b] = 1;
+  std::vector<TaggedPolygon> polys;
+  std::vector<size_t> from;
+  double size = 0.0;
+  for (size_t b = 0; b < old.size(); ++b) {
+    size = std::max(size, 2.0 * old.bound_radius[b]);
+    if (!in[b]) continue;
+    polys.push_back(
+        {old.world_polygon(b),
+         {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
+    from.push_back(b);
+  }
+  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0));
+  std::vector<size_t> parents;
+  for (size_t k = 0; k < r.pieces.size(); ++k) parents.push_back(from[r.parent[k]]);
+  replace_blocks(m, old, in, r.pieces, parents);
   return r.slivers_dropped;
+}
+
+void join_blocks(Model& m, const std::vector<size_t>& chosen) {
+  if (m.cycle > 0) throw ModelError("blocks can be joined only before the first cycle");
+  if (chosen.size() < 2) throw ModelError("'join' needs at least two blocks");
+  for (const auto& s : m.histories.series)
+    if (s.block >= 0)
+      throw ModelError("join blocks before defining block histories (they would be renumbered)");
+  const Blocks old = m.blocks;
+  std::vector<uint8_t> in(old.size(), 0);
+  std::vector<TaggedPolygon> polys;
+  for (size_t b : chosen) {
+    in[b] = 1;
+    polys.push_back(
+        {old.world_polygon(b),
+         {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
+  }
+  std::string why;
+  TaggedPolygon joined = join_polygons(polys, why);
+  if (joined.points.empty()) throw ModelError("cannot join blocks: " + why);
+  replace_blocks(m, old, in, {joined}, {chosen.front()});
 }
 
 void delete_blocks(Model& m, const std::vector<size_t>& blocks) {

@@ -44,3 +44,12 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
 Vec2 interior_point(const std::vector<Vec2>& pts);
 
 }  // namespace tessera
+
+namespace tessera {
+
+// The union of polygons that touch along edges, as one simple polygon (counter-clockwise), with
+// the tags of the outer edges kept. Empty, with `why` set, when the union is not one simple
+// polygon (the blocks do not touch, or they enclose a hole).
+TaggedPolygon join_polygons(const std::vector<TaggedPolygon>& polygons, std::string& why);
+
+}  // namespace tessera

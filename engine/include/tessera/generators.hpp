@@ -16,6 +16,7 @@ struct WallSpec {
   double brick_length = 2.0, brick_height = 1.0;
   int courses = 1, bricks = 1;
   int group = -1, material = -1;
+  int bed_tag = -1, head_tag = -1;  // joint tags of the bed (horizontal) and head joints
 };
 
 // Adds the bricks to the model (density from the material); returns the number added.
@@ -63,6 +64,10 @@ std::vector<CutLine> voronoi_traces(const Vec2& lo, const Vec2& hi, double size,
 // group, material and fixity. Only before the first cycle: blocks are renumbered 1, 2, ... and
 // contacts are made anew. Returns the number of slivers that snapping dropped.
 size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen);
+
+// Joins blocks that touch along edges into one (possibly concave) block; before the first
+// cycle only. Throws ModelError saying why when the union is not one simple polygon.
+void join_blocks(Model& m, const std::vector<size_t>& blocks);
 
 // Deletes blocks at any time (excavation): their contacts go, their histories read NaN from now.
 void delete_blocks(Model& m, const std::vector<size_t>& blocks);

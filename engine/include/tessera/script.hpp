@@ -117,6 +117,7 @@ class Interpreter {
   void cmd_voronoi(Args&);
   void cmd_arch(Args&);
   void cmd_delete(Args&);
+  void cmd_join(Args&);
   void cmd_check(Args&);
   // Runs the geometry checks; errors fail unless the script said to go on.
   void run_checks(bool before_run);
