@@ -40,6 +40,16 @@ std::vector<size_t> Interpreter::optional_selection(Args& a) {
   return {};
 }
 
+std::pair<Vec2, Vec2> Interpreter::cut_box(std::vector<size_t>& chosen) const {
+  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
+  if (chosen.empty())
+    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (size_t b : chosen)
+    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return {lo, hi};
+}
+
 void Interpreter::cmd_region(Args& a) {
   if (a.words.size() != 2)
     fail("write 'region X0,Y0 X1,Y1 [group=G] [material=M]' (two opposite corners)");
@@ -88,14 +98,8 @@ void Interpreter::cmd_jset(Args& a) {
   auto sel = optional_selection(a);
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
-  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
   std::vector<size_t> chosen = sel;
-  if (chosen.empty())
-    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
-  // Box of the blocks to cut.
-  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (size_t b : chosen)
-    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto [lo, hi] = cut_box(chosen);
   const int tag = joint_tag(model_, name);
   std::vector<CutLine> traces = joint_set_traces(j, lo, hi, tag);
   if (j.extend) {
@@ -187,13 +191,8 @@ void Interpreter::cmd_voronoi(Args& a) {
   auto sel = optional_selection(a);
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
-  if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
   std::vector<size_t> chosen = sel;
-  if (chosen.empty())
-    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
-  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (size_t b : chosen)
-    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const auto [lo, hi] = cut_box(chosen);
   if ((hi - lo).x() * (hi - lo).y() / (size * size) > 2e5)
     fail("that would make more than 200,000 cells");
   cut_blocks(model_,

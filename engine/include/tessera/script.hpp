@@ -124,6 +124,8 @@ class Interpreter {
   // A mean and optional standard deviation written as MEAN or MEAN,SD.
   std::pair<double, double> mean_sd(const std::string& text) const;
   std::vector<size_t> optional_selection(Args& a);
+  // The blocks a cut acts on (all when `chosen` is empty, which it then lists) and their box.
+  std::pair<Vec2, Vec2> cut_box(std::vector<size_t>& chosen) const;
 
   // Argument helpers (script.cpp).
   [[noreturn]] void fail(const std::string& message) const;
