@@ -276,9 +276,11 @@ void Interpreter::cmd_wall(Args& a) {
   w.brick_length = brick.x(), w.brick_height = brick.y();
   if (w.brick_length <= 0.0 || w.brick_height <= 0.0) fail("brick sizes must be positive");
   if (!take(a, "courses", v)) missing(a, "courses", "'wall'");
-  w.courses = static_cast<int>(integer(v, 1));
+  w.courses = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
   if (!take(a, "bricks", v)) missing(a, "bricks", "'wall' (bricks per course)");
-  w.bricks = static_cast<int>(integer(v, 1));
+  w.bricks = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
+  if (static_cast<double>(w.courses) * w.bricks > 1e6)
+    fail("a wall of more than a million bricks is not supported");
   if (take(a, "group", v)) w.group = model_.group_index(v, true);
   if (take(a, "material", v)) {
     w.material = model_.material_index(v);

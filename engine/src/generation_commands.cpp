@@ -139,7 +139,8 @@ void Interpreter::cmd_tunnel(Args& a) {
     double r = 0.0, n = 24;
     if (!take_num(a, "radius", r)) missing(a, "radius", "'tunnel circle'");
     take_num(a, "segments", n);
-    if (r <= 0.0 || n < 3) fail("a circle needs a positive radius and at least 3 segments");
+    if (r <= 0.0 || n < 3 || n > 1e5)
+      fail("a circle needs a positive radius and 3 to 100,000 segments");
     outline = circle_outline(c, r, static_cast<int>(n));
   } else if (shape == "horseshoe") {
     if (!take(a, "centre", v)) missing(a, "centre", "'tunnel horseshoe' (the middle of its floor)");
@@ -224,8 +225,8 @@ void Interpreter::cmd_arch(Args& a) {
   }
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
-  if (s.radius <= 0.0 || s.thickness <= 0.0 || n < 1 || n != std::floor(n))
-    fail("an arch needs radius > 0, thickness > 0 and a whole number of voussoirs");
+  if (s.radius <= 0.0 || s.thickness <= 0.0 || n < 1 || n > 1e5 || n != std::floor(n))
+    fail("an arch needs radius > 0, thickness > 0 and a whole number of voussoirs up to 100,000");
   if (s.half_angle <= 0.0 || s.half_angle > 90.0) fail("half_angle must be in (0, 90] degrees");
   add_arch(model_, s);
   overlap_checked_ = false;

@@ -84,6 +84,14 @@ std::vector<CutLine> joint_set_traces(const JointSetSpec& j, const Vec2& lo, con
     t0 = std::min(t0, (c - j.origin).dot(u)), t1 = std::max(t1, (c - j.origin).dot(u));
   }
   const double reach = (hi - lo).norm();
+  // Refuse what would not fit in memory or time, before drawing anything.
+  const double lines = (s1 - s0) / (0.1 * j.spacing);
+  const double per_line =
+      j.trace > 0.0 ? (t1 - t0 + reach) / (0.05 * j.trace + std::max(j.gap, 0.0)) : 1.0;
+  if (lines > 1e5 || lines * per_line > 1e6)
+    throw ModelError(
+        "the joint set would make more than a million traces: the spacing or trace length is too "
+        "small for the blocks it cuts");
   std::vector<CutLine> out;
   // One line of traces at offset s from the origin line.
   auto line = [&](double s) {
