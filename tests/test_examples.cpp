@@ -3,7 +3,9 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QXmlStreamReader>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
@@ -48,6 +50,46 @@ std::map<std::string, std::vector<double>> read_history(const QString& dir) {
   return cols;
 }
 
+// Checks a VTK XML PolyData file: well-formed, and every data array holds as many tuples as the
+// piece has points or cells. Returns the number of cells, or -1 with a message.
+long check_vtp(const QString& path, QString& why) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) return why = "cannot open " + path, -1;
+  QXmlStreamReader xml(&f);
+  long points = -1, cells = -1;
+  QString section;
+  while (!xml.atEnd()) {
+    xml.readNext();
+    if (!xml.isStartElement()) continue;
+    const auto name = xml.name();
+    const auto at = xml.attributes();
+    if (name == QLatin1String("Piece")) {
+      points = at.value("NumberOfPoints").toLong();
+      cells = at.value("NumberOfPolys").toLong() + at.value("NumberOfLines").toLong();
+    } else if (name == QLatin1String("Points") || name == QLatin1String("CellData") ||
+               name == QLatin1String("Polys") || name == QLatin1String("Lines")) {
+      section = name.toString();
+    } else if (name == QLatin1String("DataArray")) {
+      const long comps = at.value("NumberOfComponents").toLong();
+      const QString array = at.value("Name").toString();
+      const long values =
+          xml.readElementText().split(QRegularExpression("\\s+"), Qt::SkipEmptyParts).size();
+      const long expect = section == "Points"     ? 3 * points
+                          : section == "CellData" ? comps * cells
+                          : array == "offsets"    ? cells
+                                                  : -2;
+      if (expect != -2 && values != expect)
+        return why = QString("%1: %2 has %3 values, expected %4")
+                         .arg(path, array)
+                         .arg(values)
+                         .arg(expect),
+               -1;
+    }
+  }
+  if (xml.hasError()) return why = path + ": " + xml.errorString(), -1;
+  return cells;
+}
+
 QJsonObject read_summary(const QString& dir) {
   QFile f(dir + "/summary.json");
   if (!f.open(QIODevice::ReadOnly)) return {};
@@ -75,6 +117,13 @@ class TestExamples : public QObject {
     qInfo("top settlement %.4e m, estimate %.4e m", top, expected);
     QVERIFY(std::abs(top - expected) < 0.05 * expected);
     QVERIFY(QFile::exists(r.dir + "/vtk/blocks.pvd") && QFile::exists(r.dir + "/vtk/contacts.pvd"));
+    // The ParaView files are well-formed and consistent.
+    QString why;
+    QCOMPARE(check_vtp(r.dir + "/vtk/blocks_0000.vtp", why), 79L);
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    QCOMPARE(check_vtp(r.dir + "/vtk/contacts_0000.vtp", why),
+             static_cast<long>(s["contacts"].toInt()));
+    QVERIFY2(why.isEmpty(), qPrintable(why));
   }
   void brickWallIsTheSameAtTwoThreads() {
     QTemporaryDir other;

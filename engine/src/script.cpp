@@ -232,7 +232,7 @@ void Interpreter::done(Args& a) const {
 std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   const Blocks& B = model_.blocks;
   std::string v;
-  bool any = false, all = false;
+  bool any = false;
   double x0 = -1e300, x1 = 1e300, y0 = -1e300, y1 = 1e300;
   int group = -2;
   std::vector<size_t> ids;
@@ -299,7 +299,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   if (take(a, "smaller", v)) smaller = num(v), any = true;
   auto& words = a.words;
   const auto it = std::find(words.begin(), words.end(), "all");
-  if (it != words.end()) words.erase(it), all = any = true;
+  if (it != words.end()) words.erase(it), any = true;
   if (!any)
     fail("'" + a.command +
          "' needs blocks to act on: all, block=ID, at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1");
@@ -319,7 +319,6 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
       continue;
     out.push_back(b);
   }
-  (void)all;
   if (out.empty()) fail("no block matches the selection of '" + a.command + "'");
   return out;
 }
