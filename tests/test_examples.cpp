@@ -1,5 +1,6 @@
 // Every example runs headless through the tessera executable; its results are checked as
 // numbers against closed-form estimates, with tolerances, never as text.
+#include <QDir>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -201,6 +202,13 @@ class TestExamples : public QObject {
     auto h = read_history(r.dir);
     QVERIFY(read_summary(r.dir)["final_ratio"].toDouble() <= 1e-6);
     QVERIFY(std::abs(h["crown"].back()) < 5e-4);
+  }
+  // Every example has its numbers checked above: a new example needs a test here too.
+  void everyExampleIsChecked() {
+    const QStringList checked{"block_on_incline.tess", "brick_wall.tess", "masonry_arch.tess",
+                              "rock_slope.tess", "toppling_stack.tess", "tunnel_jointed.tess"};
+    QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
+    QCOMPARE(found, checked);
   }
   void badScriptFailsWithItsLine() {
     QTemporaryDir tmp;
