@@ -205,8 +205,9 @@ class TestExamples : public QObject {
   }
   // Every example has its numbers checked above: a new example needs a test here too.
   void everyExampleIsChecked() {
-    const QStringList checked{"block_on_incline.tess", "brick_wall.tess", "masonry_arch.tess",
-                              "rock_slope.tess", "toppling_stack.tess", "tunnel_jointed.tess"};
+    const QStringList checked{"block_on_incline.tess", "brick_wall.tess",
+                              "masonry_arch.tess",     "rock_slope.tess",
+                              "toppling_stack.tess",   "tunnel_jointed.tess"};
     QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
     QCOMPARE(found, checked);
   }

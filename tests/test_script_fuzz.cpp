@@ -136,6 +136,21 @@ const std::vector<std::string> kWords{"round",
                                       "origin=0,0",
                                       "abutment=0.2",
                                       "half_angle=60"};
+// A valid start, so that later lines reach deeper code.
+const char* kStart =
+    "round 0.01\nmaterial define rock density=2500\njoint define j kn=1e9 ks=1e9 friction=30\n"
+    "joint assign j\nregion 0,0 2,2 group=base material=rock\ngravity 0 -9.81";
+
+// Runs one line: it works, or it is refused with a message that names the file and line.
+void attempt(ScriptRun& r, const std::string& text, int line, int& ok, int& errors) {
+  try {
+    r.interp->execute(text, "fuzz", line);
+    ++ok;
+  } catch (const ScriptError& e) {
+    ++errors;
+    QVERIFY2(std::string(e.what()).rfind("fuzz:", 0) == 0, e.what());
+  }
+}
 }  // namespace
 
 class TestScriptFuzz : public QObject {
@@ -146,23 +161,14 @@ class TestScriptFuzz : public QObject {
     int errors = 0, ok = 0;
     for (int model = 0; model < 40; ++model) {
       ScriptRun r;
-      // A valid start, so that later lines reach deeper code.
-      r.run(
-          "round 0.01\nmaterial define rock density=2500\njoint define j kn=1e9 ks=1e9 "
-          "friction=30\n"
-          "joint assign j\nregion 0,0 2,2 group=base material=rock\ngravity 0 -9.81");
+      r.run(kStart);
       for (int line = 0; line < 60; ++line) {
-        // A command, then a few words (the first 23 words of the list are commands).
+        // A command, then a few words (drawn from the first 25 words of the list, the commands and
+        // their verbs).
         std::string text = kWords[rng() % 25] + " ";
         const int n = static_cast<int>(rng() % 5);
         for (int w = 0; w < n; ++w) text += kWords[rng() % kWords.size()] + " ";
-        try {
-          r.interp->execute(text, "fuzz", line + 1);
-          ++ok;
-        } catch (const ScriptError& e) {
-          ++errors;
-          QVERIFY2(std::string(e.what()).rfind("fuzz:", 0) == 0, e.what());
-        }
+        attempt(r, text, line + 1, ok, errors);
       }
       // Still usable.
       r.interp->execute("set z = 1 + 1", "fuzz", 99);
@@ -208,10 +214,7 @@ class TestScriptFuzz : public QObject {
     int errors = 0, ok = 0;
     for (int model = 0; model < 25; ++model) {
       ScriptRun r;
-      r.run(
-          "round 0.01\nmaterial define rock density=2500\njoint define j kn=1e9 ks=1e9 "
-          "friction=30\n"
-          "joint assign j\nregion 0,0 2,2 group=base material=rock\ngravity 0 -9.81");
+      r.run(kStart);
       for (int line = 0; line < 25; ++line) {
         std::string text;
         for (char c : pick(templates)) {
@@ -224,13 +227,7 @@ class TestScriptFuzz : public QObject {
           else
             text += c;
         }
-        try {
-          r.interp->execute(text, "fuzz", line + 1);
-          ++ok;
-        } catch (const ScriptError& e) {
-          ++errors;
-          QVERIFY2(std::string(e.what()).rfind("fuzz:", 0) == 0, e.what());
-        }
+        attempt(r, text, line + 1, ok, errors);
       }
     }
     qInfo("%d commands ran, %d were refused with a message", ok, errors);
