@@ -157,6 +157,13 @@ class TestGeneration : public QObject {
     }
     QVERIFY(weak > 0 && other > 0);
   }
+  void hugeJointSetsAreRefused() {
+    ScriptRun r;
+    r.run(std::string(kRock) + "region 0,0 10,10 material=rock");
+    QVERIFY_THROWS_EXCEPTION(ScriptError, r.run("jset angle=0 spacing=1e-6"));
+    QVERIFY_THROWS_EXCEPTION(ScriptError, r.run("jset angle=0 spacing=0.01 origin=0,1e12"));
+    QCOMPARE(r.model().blocks.size(), size_t(1));
+  }
   void joinMakesOneBlock() {
     ScriptRun r;
     r.run(std::string(kRock) +

@@ -85,7 +85,8 @@ std::vector<CutLine> joint_set_traces(const JointSetSpec& j, const Vec2& lo, con
   }
   const double reach = (hi - lo).norm();
   // Refuse what would not fit in memory or time, before drawing anything.
-  const double lines = (s1 - s0) / (0.1 * j.spacing);
+  // (Lines are drawn outwards from the origin, so a far origin counts too.)
+  const double lines = std::max(std::abs(s0), std::abs(s1)) / (0.1 * j.spacing);
   const double per_line =
       j.trace > 0.0 ? (t1 - t0 + reach) / (0.05 * j.trace + std::max(j.gap, 0.0)) : 1.0;
   if (lines > 1e5 || lines * per_line > 1e6)
