@@ -31,6 +31,17 @@ int edge_tag(Halfedge e) {
   return tag;
 }
 
+// A coordinate as a double, from its exact value. The lazy kernel's own to_double returns whatever
+// approximation it holds, which depends on what was computed before; the exact value does not.
+double exact_double(const K::FT& v) {
+  return CGAL::to_double(CGAL::exact(v));
+}
+
+// A point rounded to doubles.
+Vec2 rounded(const Point& p) {
+  return {exact_double(p.x()), exact_double(p.y())};
+}
+
 // An edge that has the same face on both sides (a trace ending inside a block).
 bool dangling(Halfedge e) {
   return e->twin()->face() == e->face();
@@ -212,7 +223,7 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
     TaggedPolygon p;
     for (Halfedge e : boundary(f->outer_ccb())) {
       const Point& s = e->source()->point();
-      p.points.emplace_back(CGAL::to_double(s.x()), CGAL::to_double(s.y()));
+      p.points.push_back(rounded(s));
       p.edge_tags.push_back(edge_tag(e));
     }
     if (p.points.size() < 3) continue;
@@ -288,9 +299,7 @@ TaggedPolygon join_polygons(const std::vector<TaggedPolygon>& polygons, std::str
   auto inside = [&](Face f) {
     if (f->is_unbounded()) return false;
     std::vector<Vec2> pts;
-    for (Halfedge e : boundary(f->outer_ccb()))
-      pts.emplace_back(CGAL::to_double(e->source()->point().x()),
-                       CGAL::to_double(e->source()->point().y()));
+    for (Halfedge e : boundary(f->outer_ccb())) pts.push_back(rounded(e->source()->point()));
     if (pts.size() < 3) return false;
     const Vec2 q = interior_point(pts);
     for (const TaggedPolygon& p : polygons)
@@ -318,8 +327,7 @@ TaggedPolygon join_polygons(const std::vector<TaggedPolygon>& polygons, std::str
   Halfedge start = next_from.begin()->second, e = start;
   size_t walked = 0;
   do {
-    out.points.emplace_back(CGAL::to_double(e->source()->point().x()),
-                            CGAL::to_double(e->source()->point().y()));
+    out.points.push_back(rounded(e->source()->point()));
     out.edge_tags.push_back(edge_tag(e));
     const auto it = next_from.find(e->target());
     if (it == next_from.end() || ++walked > count) break;
