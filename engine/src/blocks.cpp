@@ -91,20 +91,20 @@ std::vector<Vec2> Blocks::world_polygon(size_t b) const {
 
 namespace tessera {
 
+std::vector<std::vector<double>*> Blocks::block_doubles() {
+  return {&x,           &y,       &theta,     &vx,          &vy,       &omega,
+          &fx,          &fy,      &moment,    &applied,     &x_ref,    &y_ref,
+          &mass,        &inertia, &inv_mass,  &inv_inertia, &fixed_vx, &fixed_vy,
+          &fixed_omega, &area,    &perimeter, &bound_radius};
+}
+
 std::vector<int> Blocks::remove(const std::vector<uint8_t>& doomed) {
   const size_t n = size();
   std::vector<int> map(n, -1);
   Blocks kept;
   kept.vert_begin = {0};
   // Per-block and per-vertex arrays, copied for the blocks that stay.
-  auto block_arrays = [](Blocks& b) {
-    return std::vector<std::vector<double>*>{
-        &b.x,           &b.y,       &b.theta,     &b.vx,          &b.vy,       &b.omega,
-        &b.fx,          &b.fy,      &b.moment,    &b.applied,     &b.x_ref,    &b.y_ref,
-        &b.mass,        &b.inertia, &b.inv_mass,  &b.inv_inertia, &b.fixed_vx, &b.fixed_vy,
-        &b.fixed_omega, &b.area,    &b.perimeter, &b.bound_radius};
-  };
-  auto src = block_arrays(*this), dst = block_arrays(kept);
+  auto src = block_doubles(), dst = kept.block_doubles();
   for (size_t b = 0; b < n; ++b) {
     if (doomed[b]) continue;
     map[b] = static_cast<int>(kept.x.size());

@@ -40,14 +40,22 @@ std::vector<size_t> Interpreter::optional_selection(Args& a) {
   return {};
 }
 
-std::pair<Vec2, Vec2> Interpreter::cut_box(std::vector<size_t>& chosen) const {
+Interpreter::CutTarget Interpreter::cut_target(Args& a, const std::string& kind) {
+  CutTarget t;
+  t.name = kind + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", t.name);
+  t.selection = optional_selection(a);
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
   if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
-  if (chosen.empty())
-    for (size_t b = 0; b < model_.blocks.size(); ++b) chosen.push_back(b);
-  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (size_t b : chosen)
-    for (const Vec2& p : model_.blocks.world_polygon(b)) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  return {lo, hi};
+  t.blocks = t.selection;
+  if (t.blocks.empty())
+    for (size_t b = 0; b < model_.blocks.size(); ++b) t.blocks.push_back(b);
+  t.lo = Vec2(1e300, 1e300), t.hi = Vec2(-1e300, -1e300);
+  for (size_t b : t.blocks)
+    for (const Vec2& p : model_.blocks.world_polygon(b))
+      t.lo = t.lo.cwiseMin(p), t.hi = t.hi.cwiseMax(p);
+  return t;
 }
 
 void Interpreter::cmd_region(Args& a) {
@@ -69,12 +77,8 @@ void Interpreter::cmd_crack(Args& a) {
   }
   a.words = rest;
   if (pts.size() < 2) fail("write 'crack X,Y X,Y [X,Y ...]' with at least two points");
-  std::string name = "crack" + std::to_string(model_.joint_tags.size() + 1);
-  take(a, "name", name);
-  const auto sel = optional_selection(a);
-  done(a);
-  const int tag = joint_tag(model_, name);
-  cut_blocks(model_, {CutLine{pts, tag}}, sel);
+  const CutTarget t = cut_target(a, "crack");
+  cut_blocks(model_, {CutLine{pts, joint_tag(model_, t.name)}}, t.selection);
   overlap_checked_ = false;
 }
 
@@ -93,22 +97,16 @@ void Interpreter::cmd_jset(Args& a) {
   if (take(a, "seed", v)) j.seed = static_cast<uint64_t>(integer(v, 0));
   const auto it = std::find(a.words.begin(), a.words.end(), "extend");
   if (it != a.words.end()) j.extend = true, a.words.erase(it);
-  std::string name = "jset" + std::to_string(model_.joint_tags.size() + 1);
-  take(a, "name", name);
-  auto sel = optional_selection(a);
-  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
-  done(a);
-  std::vector<size_t> chosen = sel;
-  const auto [lo, hi] = cut_box(chosen);
-  const int tag = joint_tag(model_, name);
-  std::vector<CutLine> traces = joint_set_traces(j, lo, hi, tag);
+  const CutTarget target = cut_target(a, "jset");
+  std::vector<CutLine> traces =
+      joint_set_traces(j, target.lo, target.hi, joint_tag(model_, target.name));
   if (j.extend) {
     // A trace end inside a block runs on to the block's boundary.
     for (CutLine& t : traces)
       for (int end = 0; end < 2; ++end) {
         Vec2& p = t.points[static_cast<size_t>(end)];
         const Vec2 dir = (p - t.points[static_cast<size_t>(1 - end)]).normalized();
-        for (size_t b : chosen) {
+        for (size_t b : target.blocks) {
           const auto poly = model_.blocks.world_polygon(b);
           if (!point_in_polygon(p, poly)) continue;
           // Just past the boundary, so that the trace crosses it; exactly through a corner
@@ -121,7 +119,7 @@ void Interpreter::cmd_jset(Args& a) {
         }
       }
   }
-  const size_t dropped = cut_blocks(model_, traces, sel);
+  const size_t dropped = cut_blocks(model_, traces, target.selection);
   if (dropped)
     log("jset: " + std::to_string(dropped) + " sliver(s) below the snapping tolerance dropped");
   overlap_checked_ = false;
@@ -187,18 +185,13 @@ void Interpreter::cmd_voronoi(Args& a) {
   if (!take_num(a, "size", size)) missing(a, "size", "'voronoi' (mean cell size)");
   take_num(a, "seed", seed);
   if (size <= 0.0) fail("the cell size must be positive");
-  std::string name = "voronoi" + std::to_string(model_.joint_tags.size() + 1);
-  take(a, "name", name);
-  auto sel = optional_selection(a);
-  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
-  done(a);
-  std::vector<size_t> chosen = sel;
-  const auto [lo, hi] = cut_box(chosen);
-  if ((hi - lo).x() * (hi - lo).y() / (size * size) > 2e5)
+  const CutTarget t = cut_target(a, "voronoi");
+  if ((t.hi - t.lo).x() * (t.hi - t.lo).y() / (size * size) > 2e5)
     fail("that would make more than 200,000 cells");
-  cut_blocks(model_,
-             voronoi_traces(lo, hi, size, static_cast<uint64_t>(seed), joint_tag(model_, name)),
-             sel);
+  cut_blocks(
+      model_,
+      voronoi_traces(t.lo, t.hi, size, static_cast<uint64_t>(seed), joint_tag(model_, t.name)),
+      t.selection);
   overlap_checked_ = false;
 }
 

@@ -14,7 +14,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 3;
+constexpr uint32_t kVersion = 4;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -93,15 +93,8 @@ void fields(IO& io, auto& m) {
   io.pod(S.damping), io.pod(S.local_alpha), io.pod(S.global_ratio), io.pod(S.dt_safety);
   io.pod(S.dt_fixed);
   auto& B = m.blocks;
-  for (auto* v : {&B.x,           &B.y,          &B.theta,
-                  &B.vx,          &B.vy,         &B.omega,
-                  &B.fx,          &B.fy,         &B.moment,
-                  &B.applied,     &B.x_ref,      &B.y_ref,
-                  &B.mass,        &B.inertia,    &B.inv_mass,
-                  &B.inv_inertia, &B.fixed_vx,   &B.fixed_vy,
-                  &B.fixed_omega, &B.arc_radius, &B.round_length,
-                  &B.area,        &B.perimeter,  &B.bound_radius})
-    io.vec(*v);
+  for (auto* v : B.block_doubles()) io.vec(*v);
+  io.vec(B.arc_radius), io.vec(B.round_length);
   io.vec(B.fixity), io.vec(B.vert_begin), io.vec(B.local_vertex), io.vec(B.local_arc_centre);
   io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);
   io.vec(B.edge_tag);

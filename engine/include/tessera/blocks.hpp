@@ -68,6 +68,8 @@ struct Blocks {
   void update_world(size_t b);
   // World vertices of a block as a polygon (for output and checks).
   std::vector<Vec2> world_polygon(size_t b) const;
+  // Every per-block double array, in a fixed order (for copying and saving).
+  std::vector<std::vector<double>*> block_doubles();
   // Applies the fixity bits to the inverse masses.
   void refresh_inverse_mass(size_t b);
 };

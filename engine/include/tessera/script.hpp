@@ -124,8 +124,14 @@ class Interpreter {
   // A mean and optional standard deviation written as MEAN or MEAN,SD.
   std::pair<double, double> mean_sd(const std::string& text) const;
   std::vector<size_t> optional_selection(Args& a);
-  // The blocks a cut acts on (all when `chosen` is empty, which it then lists) and their box.
-  std::pair<Vec2, Vec2> cut_box(std::vector<size_t>& chosen) const;
+  // What a cut acts on: its joint name (`kind` and a number unless name= is given), the
+  // selection (empty: all blocks), the blocks themselves and their box. Finishes the keywords.
+  struct CutTarget {
+    std::string name;
+    std::vector<size_t> selection, blocks;
+    Vec2 lo, hi;
+  };
+  CutTarget cut_target(Args& a, const std::string& kind);
 
   // Argument helpers (script.cpp).
   [[noreturn]] void fail(const std::string& message) const;
