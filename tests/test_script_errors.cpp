@@ -86,6 +86,11 @@ class TestScriptErrors : public QObject {
                             "damping none\ntimestep fixed 1\nstep 200");
     QVERIFY(has(e, "diverged"));
   }
+  void cuttingNothingIsAnError() {
+    QVERIFY(has(error_of("round 0.01\ncrack 0,0 1,1"), "test:2: there are no blocks to cut"));
+    QVERIFY(has(error_of("round 0.01\nregion 0,0 1,1\njset angle=0 spacing=0.5 sideways"),
+                "test:3: unexpected word 'sideways'"));
+  }
   void emptySelectionIsAnError() {
     const auto e = error_of(std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\nfix x=5,6");
     QVERIFY(has(e, "test:5: no block matches the selection of 'fix'"));
