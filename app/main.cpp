@@ -1,52 +1,40 @@
-// The tessera executable. Batch mode runs a model script headless; the desktop window is built
-// by the GUI issue and is not part of this program yet.
+// The tessera executable: `tessera [FILE]` opens the desktop window (with a model script);
+// `tessera --batch FILE` runs a script headless.
 #include <CLI/CLI.hpp>
-#include <filesystem>
-#include <iostream>
+#include <QApplication>
+#include <QGuiApplication>
+#include <cstdlib>
 
+#include "batch.hpp"
 #include "tessera/parallel.hpp"
-#include "tessera/script.hpp"
-
-namespace fs = std::filesystem;
+#include "tessera/ui/main_window.hpp"
+#include "tessera/ui/vtk_view.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Tessera: distinct element models of blocky rock and masonry"};
-  std::string script, out_dir;
+  std::string script, batch, out_dir;
   int threads = 1;
   bool quiet = false;
-  app.add_option("--batch", script, "Run a model script headless")->check(CLI::ExistingFile);
+  app.add_option("file", script, "Model script to open in the window")->check(CLI::ExistingFile);
+  app.add_option("--batch", batch, "Run a model script headless")->check(CLI::ExistingFile);
   app.add_option("--out", out_dir, "Output folder (default: <script>_out beside the script)");
   app.add_option("--threads", threads, "Worker threads (results are identical at any count)")
       ->check(CLI::Range(1, 256));
   app.add_flag("--quiet", quiet, "Print errors and warnings only");
   CLI11_PARSE(app, argc, argv);
-  if (script.empty()) {
-    std::cerr << "tessera: the desktop window is not available in this build; run a model with "
-                 "'tessera --batch FILE'\n";
-    return 2;
+  QCoreApplication::setOrganizationName("Tessera");
+  QCoreApplication::setApplicationName("Tessera");
+  if (!batch.empty()) {
+    // Headless: fonts for figures without a display.
+    if (!std::getenv("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication gui(argc, argv);
+    return tessera::app::run_batch(batch, out_dir, threads, quiet);
   }
-  if (out_dir.empty()) {
-    const fs::path p(script);
-    out_dir = (p.parent_path() / (p.stem().string() + "_out")).string();
-  }
+  tessera::ui::VtkView::setDefaultSurfaceFormat();
+  QApplication gui(argc, argv);
   tessera::set_thread_count(threads);
-  tessera::Interpreter interp(out_dir, [quiet](const std::string& s) {
-    if (!quiet || s.find("warning") != std::string::npos) std::cout << s << std::endl;
-  });
-  int status = 0;
-  try {
-    interp.run_file(script);
-  } catch (const tessera::ScriptError& e) {
-    std::cerr << e.what() << std::endl;
-    status = 1;
-  }
-  // Results so far are written even after an error, so nothing computed is lost.
-  try {
-    interp.finish();
-  } catch (const std::exception& e) {
-    std::cerr << "tessera: " << e.what() << std::endl;
-    return 1;
-  }
-  if (!quiet) std::cout << "results in " << out_dir << std::endl;
-  return status;
+  tessera::ui::MainWindow window;
+  window.show();
+  if (!script.empty()) window.openScript(QString::fromStdString(script));
+  return QApplication::exec();
 }

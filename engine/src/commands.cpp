@@ -32,6 +32,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"solve", &Interpreter::cmd_solve},
       {"history", &Interpreter::cmd_history},
       {"vtk", &Interpreter::cmd_vtk},
+      {"figure", &Interpreter::cmd_figure},
       {"save", &Interpreter::cmd_save},
       {"restore", &Interpreter::cmd_restore},
       {"call", &Interpreter::cmd_call},

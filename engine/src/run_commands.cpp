@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tessera/expr.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/script.hpp"
 #include "tessera/state_io.hpp"
@@ -43,6 +44,7 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
       if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
       vtk_->write(m);
     }
+    if (observer_) observer_(m);
     if (m.cycle % 64 == 0) {
       const auto now = Clock::now();
       if (progress_seconds_ > 0 &&
@@ -62,6 +64,7 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
   }
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   summary_.cycles_run += model_.cycle - c0;
+  stages_.push_back({text_, file_, line_, c0, model_.cycle, false});
   summary_.wall_seconds += wall;
   log(what + ": " + progress_line(model_, wall));
 }
@@ -90,6 +93,7 @@ void Interpreter::cmd_solve(Args& a) {
         return r.converged;
       },
       "solve");
+  stages_.back().converged = r.converged;
   if (!r.converged && !r.stopped) {
     char buf[200];
     std::snprintf(
@@ -154,6 +158,56 @@ void Interpreter::cmd_vtk(Args& a) {
   if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
   for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
   vtk_->write(model_);
+}
+
+void Interpreter::cmd_figure(Args& a) {
+  if (a.words.size() != 1)
+    fail(
+        "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [vectors=on] "
+        "[magnify=F] [window=X0,Y0,X1,Y1] [title=\"...\"]'");
+  FigureRequest r;
+  const std::string ext = fs::path(a.words[0]).extension().string();
+  if (ext != ".png" && ext != ".svg" && ext != ".pdf")
+    fail("'" + a.words[0] + "': a figure is written as .png, .svg or .pdf");
+  r.view.title = title_;
+  std::string v;
+  if (take(a, "size", v)) {
+    const Vec2 s = point(v);
+    if (!(s.x() >= 16 && s.y() >= 16 && s.x() <= 16384 && s.y() <= 16384))
+      fail("the figure size must be between 16 and 16384 in each direction");
+    r.width = static_cast<int>(s.x()), r.height = static_cast<int>(s.y());
+  }
+  if (take(a, "colour", v) && !parse_colour_by(v, r.view.colour))
+    fail("'" + v + "' is not something blocks are coloured by" + suggest(v, colour_by_names()));
+  if (take(a, "contacts", v) && !parse_contact_show(v, r.view.contacts))
+    fail("'" + v + "' is not a way of showing contacts" + suggest(v, contact_show_names()));
+  if (take(a, "vectors", v)) {
+    if (v != "on" && v != "off") fail("write vectors=on or vectors=off");
+    r.view.vectors = v == "on";
+  }
+  if (take_num(a, "magnify", r.view.magnify) && !(r.view.magnify >= 0.0))
+    fail("the magnification must be zero or more");
+  if (take(a, "window", v)) {
+    const auto parts = split_top_level(v);
+    if (parts.size() != 4) fail("write window=X0,Y0,X1,Y1");
+    r.view.lo = {num(parts[0]), num(parts[1])}, r.view.hi = {num(parts[2]), num(parts[3])};
+    if (!(r.view.hi.x() > r.view.lo.x() && r.view.hi.y() > r.view.lo.y()))
+      fail("the window's second corner must be above and right of the first");
+    r.view.has_window = true;
+  }
+  if (take(a, "title", v)) {
+    if (v.size() > 1 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+    r.view.title = v;
+  }
+  done(a);
+  if (!figure_sink_) fail("figures are drawn by the tessera program; this run has no renderer");
+  fs::create_directories(out_dir_);
+  r.path = resolve(a.words[0], false);
+  if (!fs::path(r.path).parent_path().empty())
+    fs::create_directories(fs::path(r.path).parent_path());
+  for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
+  figure_sink_(r, model_);
+  log("figure " + r.path);
 }
 
 void Interpreter::cmd_save(Args& a) {

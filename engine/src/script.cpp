@@ -107,6 +107,11 @@ void Interpreter::run_file(const std::string& path) {
   int n = 0;
   while (std::getline(in, text)) {
     ++n;
+    // A stop from another thread ends the script between lines as well as inside a run.
+    if (stop_ && stop_->load()) {
+      log("stopped before " + path + ":" + std::to_string(n));
+      break;
+    }
     execute(text, path, n);
   }
   file_ = saved_file, line_ = saved_line;
@@ -136,12 +141,24 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
     for (const auto& [name, fn] : h) names.push_back(name);
     fail("unknown command '" + a.command + "'" + suggest(a.command, names));
   }
+  text_ = text;
+  // 'call' is not rolled back as a whole: its lines are, one by one.
+  std::unique_ptr<Model> backup;
+  if (rollback_ && a.command != "call") backup = std::make_unique<Model>(model_);
   try {
-    (this->*(it->second))(a);
+    try {
+      (this->*(it->second))(a);
+    } catch (const ScriptError&) {
+      throw;
+    } catch (const std::exception& e) {
+      fail(e.what());
+    }
   } catch (const ScriptError&) {
+    if (backup) {
+      model_ = std::move(*backup);
+      log("the model is as it was before this command");
+    }
     throw;
-  } catch (const std::exception& e) {
-    fail(e.what());
   }
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tessera/checks.hpp"
+#include "tessera/figure.hpp"
 #include "tessera/model.hpp"
 #include "tessera/solver.hpp"
 #include "tessera/vtk_output.hpp"
@@ -47,6 +48,15 @@ struct RunSummary {
   std::vector<std::string> warnings;
 };
 
+// A step or solve the script ran: the stages of an analysis, as the GUI lists them.
+struct StageRecord {
+  std::string command;  // the line as written
+  std::string file;
+  int line = 0;
+  uint64_t first_cycle = 0, last_cycle = 0;
+  bool converged = false;  // solve only
+};
+
 // One command line split into words; key=value words become keys.
 struct Args {
   std::string command;
@@ -78,6 +88,16 @@ class Interpreter {
   void set_stop_flag(std::atomic<bool>* flag) { stop_ = flag; }
   // Seconds between progress lines during a run (0: none).
   void set_progress_interval(double seconds) { progress_seconds_ = seconds; }
+  // Called on the running thread after every cycle of a step or solve (the GUI takes its
+  // snapshots and pauses here).
+  void set_observer(std::function<void(const Model&)> observer) { observer_ = std::move(observer); }
+  // Draws figures for the `figure` command; without one, `figure` is an error.
+  void set_figure_sink(FigureSink sink) { figure_sink_ = std::move(sink); }
+  // With rollback on, a command that fails leaves the model as it was before that command
+  // (the GUI's promise: nothing the user made is lost to a bad line or a diverging run).
+  void set_rollback(bool on) { rollback_ = on; }
+  const std::vector<StageRecord>& stages() const { return stages_; }
+  const std::string& title() const { return title_; }
 
  private:
   using Handler = void (Interpreter::*)(Args&);
@@ -104,6 +124,7 @@ class Interpreter {
   void cmd_solve(Args&);
   void cmd_history(Args&);
   void cmd_vtk(Args&);
+  void cmd_figure(Args&);
   void cmd_save(Args&);
   void cmd_restore(Args&);
   void cmd_call(Args&);
@@ -164,6 +185,11 @@ class Interpreter {
   CheckLimits limits_;
   bool proceed_on_errors_ = false;
   std::atomic<bool>* stop_ = nullptr;
+  std::function<void(const Model&)> observer_;
+  FigureSink figure_sink_;
+  bool rollback_ = false;
+  std::vector<StageRecord> stages_;
+  std::string text_;  // the line being run
   double progress_seconds_ = 2.0;
   RunSummary summary_;
   friend struct ScriptAccess;

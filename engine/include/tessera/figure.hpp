@@ -1,0 +1,58 @@
+// What a figure of the model shows: the request a script's `figure` command makes and the GUI's
+// view options share this vocabulary, so a headless run draws what the window draws.
+//
+// The engine only parses and checks the request; drawing is the application's (ui/), handed in
+// through a FigureSink, because the engine links neither Qt nor VTK.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+
+struct Model;
+
+// What the blocks are coloured by.
+enum class ColourBy : int {
+  kGroup,
+  kMaterial,
+  kDisplacement,
+  kXDisp,
+  kYDisp,
+  kVelocity,
+  kRotation
+};
+// How contacts are drawn: not at all, coloured by state (open, slipping, elastic), by normal
+// force, or by joint shear displacement. Widths always scale with normal force.
+enum class ContactShow : int { kOff, kState, kForce, kShear };
+
+const std::vector<std::string>& colour_by_names();
+const std::vector<std::string>& contact_show_names();
+// Parses a name; false if unknown.
+bool parse_colour_by(const std::string& word, ColourBy& c);
+bool parse_contact_show(const std::string& word, ContactShow& c);
+
+// What to draw, shared by the view and figures.
+struct ViewOptions {
+  ColourBy colour = ColourBy::kGroup;
+  ContactShow contacts = ContactShow::kState;
+  bool vectors = false;     // displacement vectors at block centroids
+  double magnify = 1.0;     // deformed shape: displacements times this
+  bool has_window = false;  // a window in model coordinates, else the whole model
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  std::string title;
+};
+
+// One figure to write: PNG (pixels), SVG or PDF (the same size in points), by the extension.
+struct FigureRequest {
+  std::string path;
+  int width = 1600, height = 1000;
+  ViewOptions view;
+};
+
+using FigureSink = std::function<void(const FigureRequest&, const Model&)>;
+
+}  // namespace tessera

@@ -1,0 +1,34 @@
+// Names of the figure and view options, shared by scripts and the GUI.
+#include "tessera/figure.hpp"
+
+namespace tessera {
+
+const std::vector<std::string>& colour_by_names() {
+  static const std::vector<std::string> names{"group", "material", "displacement", "xdisp",
+                                              "ydisp", "velocity", "rotation"};
+  return names;
+}
+
+const std::vector<std::string>& contact_show_names() {
+  static const std::vector<std::string> names{"off", "state", "force", "shear"};
+  return names;
+}
+
+namespace {
+template <typename E>
+bool parse_name(const std::vector<std::string>& names, const std::string& word, E& e) {
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == word) return e = static_cast<E>(i), true;
+  return false;
+}
+}  // namespace
+
+bool parse_colour_by(const std::string& word, ColourBy& c) {
+  return parse_name(colour_by_names(), word, c);
+}
+
+bool parse_contact_show(const std::string& word, ContactShow& c) {
+  return parse_name(contact_show_names(), word, c);
+}
+
+}  // namespace tessera

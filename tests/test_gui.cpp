@@ -1,0 +1,229 @@
+// The desktop window under Xvfb: runs on the worker thread while the event loop goes on, pixels
+// of the rendered view, figure export, and a bad command leaving the model as it was.
+#include <QApplication>
+#include <QFile>
+#include <QImage>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include "tessera/ui/colour_map.hpp"
+#include "tessera/ui/console_widget.hpp"
+#include "tessera/ui/history_charts.hpp"
+#include "tessera/ui/main_window.hpp"
+#include "tessera/ui/model_tree.hpp"
+#include "tessera/ui/vtk_view.hpp"
+
+using namespace tessera;
+using namespace tessera::ui;
+
+namespace {
+// Two blocks side by side in groups left and right, resting on a fixed base (group base).
+const char* kTwoBlocks = R"(title "Two blocks"
+round 0.005
+material define stone density=2500
+joint define dry kn=1e9 ks=1e9 friction=30
+joint assign dry
+block 0,0 4,0 4,1 0,1 group=base material=stone
+fix group=base
+block 0,1 1.9,1 1.9,3 0,3 group=left material=stone
+block 2.1,1 4,1 4,3 2.1,3 group=right material=stone
+gravity 0 -9.81
+history ydisp block=2
+history ratio
+history interval 10
+)";
+
+// Waits for the window's current command to end; returns whether it succeeded.
+bool wait_finished(MainWindow& w, int timeout_ms = 60000) {
+  QSignalSpy spy(&w, &MainWindow::commandFinished);
+  if (!w.busy()) return true;
+  if (!spy.wait(timeout_ms)) return false;
+  return spy.takeFirst().at(0).toBool();
+}
+
+bool close_to(QColor c, Rgb expected, int tol = 12) {
+  return std::abs(c.red() - expected.r) <= tol && std::abs(c.green() - expected.g) <= tol &&
+         std::abs(c.blue() - expected.b) <= tol;
+}
+}  // namespace
+
+class TestGui : public QObject {
+  Q_OBJECT
+  QTemporaryDir dir_;
+  QString script_;
+
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    script_ = dir_.filePath("two_blocks.tess");
+    QFile f(script_);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kTwoBlocks);
+  }
+
+  // The solve runs on the worker: the event loop (a timer) keeps going during it; stop ends it at
+  // a cycle boundary and the model can be stepped on.
+  void runsOnWorkerThread() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    QVERIFY(w.snapshot());
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    int ticks = 0;
+    QTimer timer;
+    connect(&timer, &QTimer::timeout, [&] { ++ticks; });
+    timer.start(10);
+    w.step(100000000);
+    QVERIFY(w.busy());
+    QTest::qWait(600);
+    const int ticks_during = ticks;
+    const uint64_t seen = w.snapshot()->cycle;
+    w.stopRun();
+    QVERIFY(wait_finished(w));
+    // The timer fired while the solver ran, and frames arrived during the run. (Under Xvfb
+    // with software OpenGL a frame takes ~30 ms of the event loop; a blocked loop gives 0.)
+    QVERIFY2(ticks_during >= 5, qPrintable(QString("only %1 timer ticks").arg(ticks_during)));
+    QVERIFY(seen > 0);
+    const uint64_t stopped_at = w.snapshot()->cycle;
+    QVERIFY(stopped_at > 0 && stopped_at < 100000000);
+    QVERIFY(w.charts()->chartCount() == 2 && w.charts()->pointCount(0) > 2);
+    // A consistent model: it steps on from where it stopped.
+    w.step(10);
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->cycle, stopped_at + 10);
+    QVERIFY(w.console()->text().contains("stopped"));
+  }
+
+  // Pause holds the solver between cycles; resume lets it go on.
+  void pauseHoldsTheSolver() {
+    MainWindow w;
+    w.show();
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    w.step(100000000);
+    QTest::qWait(200);
+    w.setPaused(true);
+    QTest::qWait(300);
+    const uint64_t a = w.snapshot()->cycle;
+    QTest::qWait(300);
+    QCOMPARE(w.snapshot()->cycle, a);
+    w.setPaused(false);
+    QTest::qWait(300);
+    QVERIFY(w.snapshot()->cycle > a);
+    w.stopRun();
+    QVERIFY(wait_finished(w));
+  }
+
+  // The view draws each group in its palette colour at the blocks' centres, white outside.
+  void framebufferShowsGroupColours() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    ViewOptions o;
+    o.colour = ColourBy::kGroup;
+    o.contacts = ContactShow::kOff;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const QImage img = w.view()->grabFramebuffer();
+    QVERIFY(!img.isNull() && img.width() > 100);
+    const auto pixel = [&](double x, double y) {
+      const QPoint p = w.view()->pixelOf({x, y});
+      const double r = img.devicePixelRatio();
+      return img.pixelColor(int(p.x() * r), int(p.y() * r));
+    };
+    // Groups in order of first use: base 0, left 1, right 2.
+    QVERIFY2(close_to(pixel(2.0, 0.5), category(0)), qPrintable(pixel(2.0, 0.5).name()));
+    QVERIFY2(close_to(pixel(0.95, 2.0), category(1)), qPrintable(pixel(0.95, 2.0).name()));
+    QVERIFY2(close_to(pixel(3.05, 2.0), category(2)), qPrintable(pixel(3.05, 2.0).name()));
+    QVERIFY(close_to(pixel(2.0, 2.0), Rgb{255, 255, 255}));  // the gap between the blocks
+    // Coloured by displacement after a run, the picture changes.
+    w.step(200);
+    QVERIFY(wait_finished(w));
+    o.colour = ColourBy::kDisplacement;
+    w.setViewOptions(o);
+    QTest::qWait(100);
+    const QImage img2 = w.view()->grabFramebuffer();
+    QVERIFY(img2 != img);
+    // Screenshots for a person to look at, when asked for.
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS")) {
+      const QString at = qEnvironmentVariable("TESSERA_TEST_SHOTS");
+      img.save(at + "/view_groups.png");
+      w.grab().save(at + "/window.png");
+    }
+    // Picking the left block shows its values.
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({0.95, 2.0}));
+    QCOMPARE(w.properties()->heading(), QString("block 2"));
+    QCOMPARE(w.properties()->value("group"), QString("left"));
+  }
+
+  // Figures of the current view: PNG of the asked size, valid SVG and PDF.
+  void exportsFigures() {
+    MainWindow w;
+    w.show();
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    const QString png = dir_.filePath("view.png"), svg = dir_.filePath("view.svg"),
+                  pdf = dir_.filePath("view.pdf");
+    w.exportFigure(png, 800, 500);
+    w.exportFigure(svg, 800, 500);
+    w.exportFigure(pdf, 800, 500);
+    const QImage img(png);
+    QCOMPARE(img.size(), QSize(800, 500));
+    QSvgRenderer renderer(svg);
+    QVERIFY(renderer.isValid());
+    QCOMPARE(renderer.viewBoxF(), QRectF(0, 0, 800, 500));
+    QFile f(pdf);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    QVERIFY(bytes.startsWith("%PDF-") && bytes.contains("%%EOF") && bytes.size() > 1000);
+  }
+
+  // A bad command and a diverging run: an error in the console and a message, the model as
+  // it was before the command.
+  void badCommandLeavesModel() {
+    MainWindow w;
+    w.show();
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    w.step(50);
+    QVERIFY(wait_finished(w));
+    const auto before = w.snapshot();
+    w.runCommand("blok 0,0 1,0 1,1");
+    QVERIFY(!wait_finished(w));
+    QVERIFY(w.console()->text().contains(
+        "<console>:2: unknown command 'blok' (did you mean 'block'?)"));
+    QVERIFY(w.errorBox() && w.errorBox()->isVisible());
+    // A fixed time step far too large: the run diverges and is rolled back.
+    w.runCommand("timestep fixed 0.5");
+    QVERIFY(wait_finished(w));
+    w.step(1000);
+    QVERIFY(!wait_finished(w));
+    QVERIFY(w.console()->text().contains("diverged"));
+    const auto after = w.snapshot();
+    QCOMPARE(after->cycle, before->cycle);
+    QCOMPARE(after->blocks.size(), before->blocks.size());
+    for (size_t b = 0; b < after->blocks.size(); ++b) {
+      QCOMPARE(after->blocks[b].x, before->blocks[b].x);
+      QCOMPARE(after->blocks[b].y, before->blocks[b].y);
+    }
+  }
+};
+
+int main(int argc, char** argv) {
+  VtkView::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  TestGui t;
+  return QTest::qExec(&t, argc, argv);
+}
+
+#include "test_gui.moc"

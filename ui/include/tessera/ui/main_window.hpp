@@ -1,0 +1,110 @@
+// The main window: viewport, model tree, property panel, console and history charts around a
+// solver running on its own thread.
+#pragma once
+
+#include <QMainWindow>
+#include <QThread>
+#include <QTimer>
+#include <memory>
+
+#include "tessera/figure.hpp"
+#include "tessera/ui/snapshot.hpp"
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QMenu;
+class QMessageBox;
+class QProgressBar;
+class QSpinBox;
+
+namespace tessera::ui {
+
+class ConsoleWidget;
+class HistoryCharts;
+class ModelTree;
+class PropertyPanel;
+class SolverWorker;
+class VtkView;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a model script: a new model, built and run by the script on the solver's thread.
+  void openScript(const QString& path);
+  // Runs one line of script as if typed in the console.
+  void runCommand(const QString& line);
+  void step(int cycles);
+  void solve();
+  void setPaused(bool paused);
+  void stopRun();
+  // Writes the current view as a figure (.png, .svg or .pdf) of the given size.
+  void exportFigure(const QString& path, int width, int height);
+  void setViewOptions(const ViewOptions& o);
+  const ViewOptions& viewOptions() const { return options_; }
+
+  bool busy() const;
+  // The snapshot on screen now.
+  std::shared_ptr<const Snapshot> snapshot() const { return shown_; }
+  VtkView* view() const { return view_; }
+  ConsoleWidget* console() const { return console_; }
+  HistoryCharts* charts() const { return charts_; }
+  ModelTree* tree() const { return tree_; }
+  PropertyPanel* properties() const { return properties_; }
+  // The last error message box, if one is open.
+  QMessageBox* errorBox() const { return error_box_; }
+
+ signals:
+  // A command, file or run ended (ok false: it failed and the model was kept as before).
+  void commandFinished(bool ok);
+
+ protected:
+  void closeEvent(QCloseEvent* e) override;
+
+ private:
+  void buildActions();
+  void buildDocks();
+  void frame();
+  void display(std::shared_ptr<const Snapshot> s);
+  void redraw(bool fit = false);
+  void onStarted(const QString& what);
+  void onFinished(bool ok, const QString& error);
+  void updateRecent(const QString& added = {});
+  void saveScriptAs();
+  void saveStateAs();
+  void exportDialog();
+  void setBusy(bool busy);
+
+  SolverWorker* worker_;
+  QThread thread_;
+  QTimer frame_timer_;
+  VtkView* view_;
+  ConsoleWidget* console_;
+  HistoryCharts* charts_;
+  ModelTree* tree_;
+  PropertyPanel* properties_;
+  QMessageBox* error_box_ = nullptr;
+  QComboBox *colour_box_, *contacts_box_;
+  QCheckBox* vectors_box_;
+  QDoubleSpinBox* magnify_box_;
+  QSpinBox* steps_box_;
+  QLabel *cycle_label_, *ratio_label_, *speed_label_;
+  QProgressBar* progress_;
+  QMenu* recent_menu_;
+  QAction *run_action_, *step_action_, *pause_action_, *stop_action_;
+  ViewOptions options_;
+  std::shared_ptr<const Snapshot> shown_;
+  QString script_path_;
+  QStringList journal_;  // the opened script and every command that ran since: "Save script"
+  QString running_;
+  uint64_t speed_cycle_ = 0;
+  qint64 speed_ms_ = 0;
+  bool fit_next_ = true;
+};
+
+}  // namespace tessera::ui

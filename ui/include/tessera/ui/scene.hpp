@@ -1,0 +1,61 @@
+// What a picture of a snapshot holds, in model coordinates: coloured block polygons, contact
+// bars, displacement arrows and the legends that explain them.
+//
+// The VTK view and the figure writer both draw a Scene, so the window, a PNG and a PDF of the
+// same model and options show the same colours, widths and legends.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tessera/figure.hpp"
+#include "tessera/ui/colour_map.hpp"
+#include "tessera/ui/snapshot.hpp"
+
+namespace tessera::ui {
+
+struct ScenePolygon {
+  std::vector<Vec2> points;
+  Rgb colour;
+  int block = -1;  // index in the snapshot
+};
+
+// A contact drawn as a bar along the joint, its width showing the normal force.
+struct SceneBar {
+  Vec2 corners[4];
+  Rgb colour;
+  int contact = -1;
+};
+
+struct SceneArrow {
+  Vec2 tail, head;
+};
+
+// A continuous colour bar (range, units) or a list of named colours.
+struct Legend {
+  std::string title;
+  bool continuous = false;
+  double lo = 0, hi = 0;
+  std::vector<std::pair<std::string, Rgb>> entries;
+};
+
+struct Scene {
+  std::vector<ScenePolygon> polygons;
+  std::vector<SceneBar> bars;
+  std::vector<SceneArrow> arrows;
+  Legend blocks_legend, contacts_legend;
+  std::string title, caption;                 // caption: cycle, time, force scale
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // what to show
+  double arrow_scale = 0;                     // drawn length per metre of displacement
+};
+
+Scene build_scene(const Snapshot& s, const ViewOptions& o);
+
+// The block value a colour option shows, and its legend title with units.
+double block_value(const SnapshotBlock& b, ColourBy c);
+std::string value_title(ColourBy c);
+// Index of the block under a model point (-1 if none) and of the contact bar (-1).
+int block_at(const Scene& scene, Vec2 p);
+int bar_at(const Scene& scene, Vec2 p);
+
+}  // namespace tessera::ui

@@ -1,0 +1,70 @@
+// A copy of what the window shows of a model, taken on the solver's thread between cycles.
+//
+// The view never reads the live model: the worker copies positions, contact forces and the
+// model's catalogue (groups, materials, joints, histories, stages) into a Snapshot and hands it
+// over whole, so drawing can take its time while the solver cycles on.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+struct Model;
+struct StageRecord;
+}  // namespace tessera
+
+namespace tessera::ui {
+
+struct SnapshotBlock {
+  int id = 0, group = -1, material = -1;
+  double x = 0, y = 0, x_ref = 0, y_ref = 0, theta = 0;
+  double vx = 0, vy = 0, omega = 0;
+  double area = 0, mass = 0;
+  uint8_t fixity = 0;
+  uint32_t vert_begin = 0, vert_end = 0;  // into Snapshot::local
+};
+
+struct SnapshotContact {
+  int a = 0, b = 0;  // block indices
+  Vec2 point = Vec2::Zero(), normal = Vec2::Zero();
+  double length = 0, gap = 0, fn = 0, fs = 0, shear_disp = 0;
+  uint8_t flags = 0;
+  std::string joint;  // joint property name
+};
+
+// A named list of properties, for the model tree and property panel.
+struct Entry {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> properties;
+};
+
+struct Snapshot {
+  uint64_t serial = 0;  // increases with every snapshot the worker takes
+  std::string title;
+  uint64_t cycle = 0;
+  double time = 0, dt = 0, ratio = 1;
+  std::vector<SnapshotBlock> blocks;
+  std::vector<Vec2> local;  // block vertices relative to the centroid, unrotated
+  std::vector<SnapshotContact> contacts;
+  std::vector<std::string> groups;
+  std::vector<Entry> materials, joints, conditions, stages;
+  // Histories, thinned to at most kHistoryRows rows spread over the whole run.
+  static constexpr size_t kHistoryRows = 2000;
+  std::vector<std::string> history_labels;
+  std::vector<double> history_cycles;
+  std::vector<std::vector<double>> history_values;  // one vector per series
+  // Corners of the box around the blocks.
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+};
+
+// Takes a snapshot of the model (block world caches must be current).
+Snapshot make_snapshot(const Model& m, const std::string& title,
+                       const std::vector<StageRecord>& stages);
+
+// A block's vertex with the displacement and rotation since creation multiplied by `magnify`.
+Vec2 shown_vertex(const Snapshot& s, const SnapshotBlock& b, uint32_t v, double magnify);
+
+}  // namespace tessera::ui

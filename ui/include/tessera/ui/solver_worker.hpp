@@ -1,0 +1,70 @@
+// The solver's thread: runs script files, typed commands, steps and solves, and hands snapshots
+// of the model to the window while it cycles.
+//
+// The interpreter lives and runs only on this worker's thread. The window talks to it through
+// queued slots (commands) and a few thread-safe calls (snapshot request, pause, stop); it never
+// touches the model. Commands run with rollback on, so a failing one leaves the model as it was.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+
+#include "tessera/ui/snapshot.hpp"
+
+namespace tessera {
+class Interpreter;
+}
+
+namespace tessera::ui {
+
+class SolverWorker : public QObject {
+  Q_OBJECT
+ public:
+  SolverWorker();
+  ~SolverWorker() override;
+
+  // Thread-safe: asks for a snapshot at the next cycle the solver finishes.
+  void requestSnapshot() { want_snapshot_ = true; }
+  // Thread-safe: the newest snapshot not yet taken, or null.
+  std::shared_ptr<const Snapshot> takeSnapshot();
+  // Thread-safe: holds the solver between cycles, or lets it go on.
+  void setPaused(bool paused);
+  bool paused() const { return paused_; }
+  // Thread-safe: ends the running step, solve or script at the next cycle or line.
+  void stop();
+  bool busy() const { return busy_; }
+
+ public slots:
+  // A new model from a script file; results go to `outDir`.
+  void openFile(const QString& path, const QString& outDir);
+  // One line of script typed by the user.
+  void execute(const QString& line);
+  // Saves the model's state (binary, for `restore`).
+  void saveState(const QString& path);
+
+ signals:
+  void logLine(const QString& text, bool error);
+  void started(const QString& what);
+  // ok false: `error` names the file, line and fault; the model is as before the command.
+  void finished(bool ok, const QString& error);
+  void snapshotReady();
+
+ private:
+  void run(const QString& what, const std::function<void()>& body);
+  void publish();
+  void observe(const Model& m);
+
+  std::unique_ptr<Interpreter> interp_;
+  std::atomic<bool> want_snapshot_{false}, paused_{false}, stop_{false}, busy_{false};
+  std::mutex mutex_;  // guards latest_ and the pause wait
+  std::condition_variable resume_;
+  std::shared_ptr<const Snapshot> latest_;
+  uint64_t serial_ = 0;
+  int console_line_ = 0;
+};
+
+}  // namespace tessera::ui

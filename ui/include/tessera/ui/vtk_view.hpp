@@ -1,0 +1,75 @@
+// The model viewport: VTK drawing a Scene inside a QOpenGLWidget.
+//
+// Debian's VTK Qt module is built for Qt5, so VTK is embedded by hand: a
+// vtkGenericOpenGLRenderWindow that draws into the widget's context (the recipe in
+// shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the camera (for 3D
+// models), a click picks the block or contact under the cursor.
+#pragma once
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <QOpenGLWidget>
+
+#include "tessera/ui/scene.hpp"
+
+class vtkActor;
+class vtkGenericOpenGLRenderWindow;
+class vtkLegendScaleActor;
+class vtkPolyData;
+class vtkRenderer;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace tessera::ui {
+
+class VtkView : public QOpenGLWidget {
+  Q_OBJECT
+ public:
+  explicit VtkView(QWidget* parent = nullptr);
+  ~VtkView() override;
+  // The OpenGL context VTK needs (3.2 core, depth and stencil); call before QApplication.
+  static void setDefaultSurfaceFormat();
+
+  // Shows a new scene; the camera keeps its place unless this is the first or `fit` is set.
+  void showScene(const Scene& scene, bool fit = false);
+  const Scene& scene() const { return scene_; }
+  // Fits the camera to the scene.
+  void resetCamera();
+  // The model point under a widget pixel (2D views).
+  Vec2 modelPoint(const QPoint& pixel);
+  // The widget pixel a model point is drawn at (2D views).
+  QPoint pixelOf(Vec2 p);
+  // The model window the camera shows now, for figures of the current view.
+  void visibleWindow(Vec2& lo, Vec2& hi);
+
+ signals:
+  void picked(int block, int contact);
+
+ protected:
+  void initializeGL() override;
+  void paintGL() override;
+  void resizeGL(int w, int h) override;
+  void mousePressEvent(QMouseEvent* e) override;
+  void mouseMoveEvent(QMouseEvent* e) override;
+  void mouseReleaseEvent(QMouseEvent* e) override;
+  void wheelEvent(QWheelEvent* e) override;
+
+ private:
+  void rebuild();
+
+  vtkNew<vtkRenderer> renderer_;
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
+  vtkNew<vtkPolyData> blocks_, bars_, arrows_;
+  vtkNew<vtkActor> blocks_actor_, edges_actor_, bars_actor_, arrows_actor_;
+  vtkNew<vtkScalarBarActor> scalar_bar_;
+  vtkNew<vtkLegendScaleActor> scale_;
+  vtkNew<vtkTextActor> title_, caption_;
+  Scene scene_;
+  bool has_scene_ = false;
+  QPoint press_, last_;
+  Qt::MouseButton button_ = Qt::NoButton;
+  bool dragged_ = false;
+};
+
+}  // namespace tessera::ui

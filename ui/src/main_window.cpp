@@ -1,0 +1,397 @@
+// Main window layout, actions, and the flow between the solver thread and the view.
+#include "tessera/ui/main_window.hpp"
+
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDialog>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTextStream>
+#include <QToolBar>
+
+#include "tessera/ui/console_widget.hpp"
+#include "tessera/ui/figure_writer.hpp"
+#include "tessera/ui/history_charts.hpp"
+#include "tessera/ui/model_tree.hpp"
+#include "tessera/ui/solver_worker.hpp"
+#include "tessera/ui/vtk_view.hpp"
+
+namespace tessera::ui {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      worker_(new SolverWorker),
+      view_(new VtkView(this)),
+      console_(new ConsoleWidget(this)),
+      charts_(new HistoryCharts(this)),
+      tree_(new ModelTree(this)),
+      properties_(new PropertyPanel(this)) {
+  setWindowTitle("Tessera");
+  setCentralWidget(view_);
+  buildActions();
+  buildDocks();
+  // The solver's thread: commands go to it queued, its log and results come back queued.
+  worker_->moveToThread(&thread_);
+  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+  connect(worker_, &SolverWorker::logLine, console_, &ConsoleWidget::append);
+  connect(worker_, &SolverWorker::started, this, &MainWindow::onStarted);
+  connect(worker_, &SolverWorker::finished, this, &MainWindow::onFinished);
+  thread_.start();
+  connect(console_, &ConsoleWidget::command, this, &MainWindow::runCommand);
+  connect(view_, &VtkView::picked, this, [this](int block, int contact) {
+    if (!shown_) return;
+    if (contact >= 0)
+      properties_->show(QString("contact %1").arg(contact + 1),
+                        contact_properties(*shown_, contact));
+    else if (block >= 0)
+      properties_->show(QString("block %1").arg(shown_->blocks[static_cast<size_t>(block)].id),
+                        block_properties(*shown_, block));
+  });
+  connect(tree_, &ModelTree::selected, properties_, &PropertyPanel::show);
+  // Frames: at most 15 a second, pulled from the worker, never waiting for it.
+  connect(&frame_timer_, &QTimer::timeout, this, &MainWindow::frame);
+  frame_timer_.start(66);
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+  colour_box_->setCurrentText(settings.value("view/colour", "group").toString());
+  contacts_box_->setCurrentText(settings.value("view/contacts", "state").toString());
+  updateRecent();
+  statusBar()->showMessage("Open a model script (File > Open) or type commands in the console");
+}
+
+MainWindow::~MainWindow() {
+  worker_->stop();
+  thread_.quit();
+  thread_.wait();
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  settings.setValue("view/colour", colour_box_->currentText());
+  settings.setValue("view/contacts", contacts_box_->currentText());
+  worker_->stop();
+  e->accept();
+}
+
+void MainWindow::buildActions() {
+  QMenu* file = menuBar()->addMenu("&File");
+  file->addAction("&Open script…", QKeySequence::Open, this, [this] {
+    QSettings settings;
+    const QString path = QFileDialog::getOpenFileName(this, "Open model script",
+                                                      settings.value("files/dir").toString(),
+                                                      "Tessera scripts (*.tess);;All files (*)");
+    if (!path.isEmpty()) openScript(path);
+  });
+  recent_menu_ = file->addMenu("Open &recent");
+  file->addAction("&Save script as…", QKeySequence::Save, this, &MainWindow::saveScriptAs);
+  file->addAction("Save s&tate as…", QKeySequence("Ctrl+Shift+S"), this, &MainWindow::saveStateAs);
+  file->addAction("&Export figure…", QKeySequence("Ctrl+E"), this, &MainWindow::exportDialog);
+  file->addSeparator();
+  file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* run = menuBar()->addMenu("&Run");
+  run_action_ = run->addAction("&Solve", QKeySequence("F5"), this, [this] { solve(); });
+  step_action_ = run->addAction("S&tep", QKeySequence("F10"), this, [this] { step(0); });
+  pause_action_ = run->addAction("&Pause", QKeySequence("F6"));
+  pause_action_->setCheckable(true);
+  connect(pause_action_, &QAction::toggled, this, &MainWindow::setPaused);
+  stop_action_ = run->addAction("St&op", QKeySequence("Shift+F5"), this, &MainWindow::stopRun);
+  QMenu* view = menuBar()->addMenu("&View");
+  view->addAction("&Fit model", QKeySequence("Home"), this, [this] { view_->resetCamera(); });
+
+  QToolBar* bar = addToolBar("Run");
+  bar->setObjectName("run_toolbar");
+  bar->addAction(run_action_);
+  bar->addAction(step_action_);
+  steps_box_ = new QSpinBox(bar);
+  steps_box_->setRange(1, 100000000);
+  steps_box_->setValue(1000);
+  steps_box_->setToolTip("Cycles per step");
+  bar->addWidget(steps_box_);
+  bar->addAction(pause_action_);
+  bar->addAction(stop_action_);
+  QToolBar* show = addToolBar("View");
+  show->setObjectName("view_toolbar");
+  show->addWidget(new QLabel(" Colour ", show));
+  colour_box_ = new QComboBox(show);
+  for (const auto& n : colour_by_names()) colour_box_->addItem(QString::fromStdString(n));
+  show->addWidget(colour_box_);
+  show->addWidget(new QLabel(" Contacts ", show));
+  contacts_box_ = new QComboBox(show);
+  for (const auto& n : contact_show_names()) contacts_box_->addItem(QString::fromStdString(n));
+  contacts_box_->setCurrentText("state");
+  show->addWidget(contacts_box_);
+  vectors_box_ = new QCheckBox("Vectors", show);
+  show->addWidget(vectors_box_);
+  show->addWidget(new QLabel(" Magnify ", show));
+  magnify_box_ = new QDoubleSpinBox(show);
+  magnify_box_->setRange(0, 1e6);
+  magnify_box_->setDecimals(1);
+  magnify_box_->setValue(1);
+  show->addWidget(magnify_box_);
+  // Any view option change redraws the snapshot on screen.
+  auto changed = [this] {
+    parse_colour_by(colour_box_->currentText().toStdString(), options_.colour);
+    parse_contact_show(contacts_box_->currentText().toStdString(), options_.contacts);
+    options_.vectors = vectors_box_->isChecked();
+    options_.magnify = magnify_box_->value();
+    redraw();
+  };
+  connect(colour_box_, &QComboBox::currentTextChanged, this, changed);
+  connect(contacts_box_, &QComboBox::currentTextChanged, this, changed);
+  connect(vectors_box_, &QCheckBox::toggled, this, changed);
+  connect(magnify_box_, &QDoubleSpinBox::valueChanged, this, changed);
+
+  cycle_label_ = new QLabel(this);
+  ratio_label_ = new QLabel(this);
+  speed_label_ = new QLabel(this);
+  progress_ = new QProgressBar(this);
+  progress_->setMaximumWidth(160);
+  progress_->hide();
+  for (QWidget* w : {static_cast<QWidget*>(cycle_label_), static_cast<QWidget*>(ratio_label_),
+                     static_cast<QWidget*>(speed_label_), static_cast<QWidget*>(progress_)})
+    statusBar()->addPermanentWidget(w);
+  setBusy(false);
+}
+
+void MainWindow::buildDocks() {
+  auto dock = [this](const QString& title, QWidget* w, Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(title);
+    d->setWidget(w);
+    addDockWidget(area, d);
+    return d;
+  };
+  dock("Model", tree_, Qt::LeftDockWidgetArea);
+  dock("Properties", properties_, Qt::LeftDockWidgetArea);
+  dock("Console", console_, Qt::BottomDockWidgetArea);
+  dock("Histories", charts_, Qt::RightDockWidgetArea);
+  resize(1400, 900);
+}
+
+bool MainWindow::busy() const {
+  return worker_->busy() || !running_.isEmpty();
+}
+
+void MainWindow::setBusy(bool b) {
+  run_action_->setEnabled(!b);
+  step_action_->setEnabled(!b);
+  pause_action_->setEnabled(b);
+  stop_action_->setEnabled(b);
+  console_->input()->setEnabled(!b);
+  if (!b && pause_action_->isChecked()) pause_action_->setChecked(false);
+}
+
+void MainWindow::openScript(const QString& path) {
+  const QFileInfo info(path);
+  if (!info.isReadable()) {
+    console_->append(path + ": cannot open the script file", true);
+    return;
+  }
+  if (busy()) worker_->stop();
+  script_path_ = info.absoluteFilePath();
+  QFile f(script_path_);
+  journal_.clear();
+  if (f.open(QIODevice::ReadOnly | QIODevice::Text))
+    journal_ = QString::fromUtf8(f.readAll()).split('\n');
+  if (!journal_.isEmpty() && journal_.back().isEmpty()) journal_.removeLast();
+  const QString out = info.dir().filePath(info.completeBaseName() + "_out");
+  setWindowTitle("Tessera - " + info.fileName());
+  QSettings().setValue("files/dir", info.absolutePath());
+  updateRecent(script_path_);
+  fit_next_ = true;
+  running_ = "<open>";
+  setBusy(true);
+  QMetaObject::invokeMethod(worker_, "openFile", Qt::QueuedConnection, Q_ARG(QString, script_path_),
+                            Q_ARG(QString, out));
+}
+
+void MainWindow::runCommand(const QString& line) {
+  if (busy()) {
+    console_->append("the solver is running: pause or stop it before typing a command", true);
+    return;
+  }
+  running_ = line;
+  setBusy(true);
+  QMetaObject::invokeMethod(worker_, "execute", Qt::QueuedConnection, Q_ARG(QString, line));
+}
+
+void MainWindow::step(int cycles) {
+  runCommand(QString("step %1").arg(cycles > 0 ? cycles : steps_box_->value()));
+}
+
+void MainWindow::solve() {
+  runCommand("solve");
+}
+
+void MainWindow::setPaused(bool paused) {
+  worker_->setPaused(paused);
+  statusBar()->showMessage(paused ? "paused" : "running");
+}
+
+void MainWindow::stopRun() {
+  worker_->stop();
+}
+
+void MainWindow::onStarted(const QString& what) {
+  statusBar()->showMessage("running: " + what);
+  progress_->setRange(0, 0);  // busy indicator
+  progress_->show();
+  speed_cycle_ = shown_ ? shown_->cycle : 0;
+  speed_ms_ = QDateTime::currentMSecsSinceEpoch();
+}
+
+void MainWindow::onFinished(bool ok, const QString& error) {
+  const QString what = running_;
+  running_.clear();
+  progress_->hide();
+  setBusy(false);
+  if (ok && !what.startsWith('<')) journal_.append(what);
+  frame();
+  if (!ok) {
+    statusBar()->showMessage("error: the model is as it was before the failing command");
+    if (error_box_) error_box_->deleteLater();
+    error_box_ = new QMessageBox(QMessageBox::Warning, "Tessera", error, QMessageBox::Ok, this);
+    error_box_->setInformativeText("The model is as it was before this command.");
+    error_box_->setModal(false);
+    error_box_->show();
+  } else {
+    statusBar()->showMessage("ready");
+  }
+  emit commandFinished(ok);
+}
+
+void MainWindow::frame() {
+  if (worker_->busy()) worker_->requestSnapshot();
+  if (auto s = worker_->takeSnapshot()) display(std::move(s));
+}
+
+void MainWindow::display(std::shared_ptr<const Snapshot> s) {
+  const qint64 now = QDateTime::currentMSecsSinceEpoch();
+  if (now > speed_ms_ + 500 && s->cycle >= speed_cycle_) {
+    speed_label_->setText(
+        QString("%1 cycles/s")
+            .arg(1000.0 * double(s->cycle - speed_cycle_) / double(now - speed_ms_), 0, 'f', 0));
+    speed_cycle_ = s->cycle, speed_ms_ = now;
+  }
+  shown_ = std::move(s);
+  cycle_label_->setText(QString("cycle %1").arg(shown_->cycle));
+  ratio_label_->setText(QString("ratio %1").arg(shown_->ratio, 0, 'e', 2));
+  tree_->update(*shown_);
+  charts_->update(*shown_);
+  redraw(fit_next_ && !shown_->blocks.empty());
+  if (!shown_->blocks.empty()) fit_next_ = false;
+}
+
+void MainWindow::redraw(bool fit) {
+  if (shown_) view_->showScene(build_scene(*shown_, options_), fit);
+}
+
+void MainWindow::setViewOptions(const ViewOptions& o) {
+  options_ = o;
+  colour_box_->setCurrentText(QString::fromStdString(colour_by_names()[size_t(o.colour)]));
+  contacts_box_->setCurrentText(QString::fromStdString(contact_show_names()[size_t(o.contacts)]));
+  vectors_box_->setChecked(o.vectors);
+  magnify_box_->setValue(o.magnify);
+  redraw();
+}
+
+void MainWindow::exportFigure(const QString& path, int width, int height) {
+  if (!shown_) throw std::runtime_error("there is no model to draw");
+  ViewOptions o = options_;
+  o.has_window = true;
+  view_->visibleWindow(o.lo, o.hi);
+  write_figure(build_scene(*shown_, o), path.toStdString(), width, height);
+  console_->append("figure " + path, false);
+}
+
+void MainWindow::exportDialog() {
+  QSettings settings;
+  const QString path = QFileDialog::getSaveFileName(
+      this, "Export figure", settings.value("files/figure", "figure.png").toString(),
+      "PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)");
+  if (path.isEmpty()) return;
+  settings.setValue("files/figure", path);
+  QDialog d(this);
+  d.setWindowTitle("Figure size");
+  auto* w = new QSpinBox(&d);
+  auto* h = new QSpinBox(&d);
+  for (QSpinBox* s : {w, h}) s->setRange(16, 16384);
+  w->setValue(settings.value("figure/width", 1600).toInt());
+  h->setValue(settings.value("figure/height", 1000).toInt());
+  auto* ok = new QPushButton("Export", &d);
+  auto* layout = new QHBoxLayout(&d);
+  layout->addWidget(new QLabel("width", &d));
+  layout->addWidget(w);
+  layout->addWidget(new QLabel("height", &d));
+  layout->addWidget(h);
+  layout->addWidget(ok);
+  connect(ok, &QPushButton::clicked, &d, &QDialog::accept);
+  if (d.exec() != QDialog::Accepted) return;
+  settings.setValue("figure/width", w->value());
+  settings.setValue("figure/height", h->value());
+  try {
+    exportFigure(path, w->value(), h->value());
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "Tessera", e.what());
+  }
+}
+
+void MainWindow::saveScriptAs() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save script", script_path_, "Tessera scripts (*.tess)");
+  if (path.isEmpty()) return;
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
+    QMessageBox::warning(this, "Tessera", "cannot write " + path);
+    return;
+  }
+  QTextStream out(&f);
+  for (const QString& line : journal_) out << line << '\n';
+  console_->append("saved the script (" + QString::number(journal_.size()) + " lines) to " + path,
+                   false);
+}
+
+void MainWindow::saveStateAs() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save state", {}, "Tessera state (*.sav)");
+  if (path.isEmpty() || busy()) return;
+  running_ = "<save>";
+  setBusy(true);
+  QMetaObject::invokeMethod(worker_, "saveState", Qt::QueuedConnection, Q_ARG(QString, path));
+}
+
+void MainWindow::updateRecent(const QString& added) {
+  QSettings settings;
+  QStringList recent = settings.value("files/recent").toStringList();
+  if (!added.isEmpty()) {
+    recent.removeAll(added);
+    recent.prepend(added);
+    while (recent.size() > 8) recent.removeLast();
+    settings.setValue("files/recent", recent);
+  }
+  recent_menu_->clear();
+  for (const QString& path : recent)
+    recent_menu_->addAction(QFileInfo(path).fileName(), this, [this, path] { openScript(path); })
+        ->setToolTip(path);
+  recent_menu_->setEnabled(!recent.isEmpty());
+}
+
+}  // namespace tessera::ui

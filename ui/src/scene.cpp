@@ -1,0 +1,216 @@
+// Turns a snapshot and view options into drawables.
+#include "tessera/ui/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "tessera/contacts.hpp"
+
+namespace tessera::ui {
+
+double block_value(const SnapshotBlock& b, ColourBy c) {
+  switch (c) {
+    case ColourBy::kDisplacement:
+      return std::hypot(b.x - b.x_ref, b.y - b.y_ref);
+    case ColourBy::kXDisp:
+      return b.x - b.x_ref;
+    case ColourBy::kYDisp:
+      return b.y - b.y_ref;
+    case ColourBy::kVelocity:
+      return std::hypot(b.vx, b.vy);
+    case ColourBy::kRotation:
+      return b.theta * 180.0 / std::numbers::pi;
+    case ColourBy::kGroup:
+      return b.group;
+    case ColourBy::kMaterial:
+      return b.material;
+  }
+  return 0.0;
+}
+
+std::string value_title(ColourBy c) {
+  switch (c) {
+    case ColourBy::kDisplacement:
+      return "displacement [m]";
+    case ColourBy::kXDisp:
+      return "x displacement [m]";
+    case ColourBy::kYDisp:
+      return "y displacement [m]";
+    case ColourBy::kVelocity:
+      return "velocity [m/s]";
+    case ColourBy::kRotation:
+      return "rotation [deg]";
+    case ColourBy::kGroup:
+      return "group";
+    case ColourBy::kMaterial:
+      return "material";
+  }
+  return "";
+}
+
+namespace {
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+// Colours the block polygons and fills their legend.
+void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  const bool categorical = o.colour == ColourBy::kGroup || o.colour == ColourBy::kMaterial;
+  Legend& L = out.blocks_legend;
+  L.title = value_title(o.colour);
+  L.continuous = !categorical;
+  double lo = 0, hi = 0;
+  for (size_t b = 0; b < s.blocks.size(); ++b) {
+    const double v = block_value(s.blocks[b], o.colour);
+    lo = b ? std::min(lo, v) : v, hi = b ? std::max(hi, v) : v;
+  }
+  if (hi - lo < 1e-300 * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
+  L.lo = lo, L.hi = hi;
+  if (categorical) {
+    const bool groups = o.colour == ColourBy::kGroup;
+    const size_t n = groups ? s.groups.size() : s.materials.size();
+    for (size_t i = 0; i < n; ++i)
+      L.entries.push_back(
+          {groups ? s.groups[i] : s.materials[i].name, category(static_cast<int>(i))});
+  }
+  for (size_t b = 0; b < s.blocks.size(); ++b) {
+    const SnapshotBlock& blk = s.blocks[b];
+    ScenePolygon p;
+    p.block = static_cast<int>(b);
+    for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v)
+      p.points.push_back(shown_vertex(s, blk, v, o.magnify));
+    const double v = block_value(blk, o.colour);
+    p.colour = categorical ? category(static_cast<int>(v)) : ramp((v - lo) / (hi - lo));
+    out.polygons.push_back(std::move(p));
+  }
+}
+
+// Contact bars along the joint: width from the normal force, colour from the option.
+void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
+  if (o.contacts == ContactShow::kOff || s.contacts.empty()) return;
+  double fmax = 0, smax = 0;
+  for (const auto& c : s.contacts)
+    fmax = std::max(fmax, c.fn), smax = std::max(smax, std::abs(c.shear_disp));
+  double mean_length = 0;
+  for (const auto& c : s.contacts) mean_length += c.length;
+  mean_length /= static_cast<double>(s.contacts.size());
+  const double wmax = std::clamp(0.25 * mean_length, 1e-4 * size, 0.02 * size);
+  const double wmin = 0.08 * wmax;
+  Legend& L = out.contacts_legend;
+  if (o.contacts == ContactShow::kState) {
+    L.title = "contacts";
+    L.entries = {{"open", open_colour()},
+                 {"elastic", elastic_colour()},
+                 {"slipping", slipping_colour()},
+                 {"bonded", bonded_colour()}};
+  } else {
+    L.continuous = true;
+    L.title = o.contacts == ContactShow::kForce ? "normal force [N/m]" : "shear displacement [m]";
+    L.lo = 0, L.hi = o.contacts == ContactShow::kForce ? fmax : smax;
+    if (L.hi <= 0) L.hi = 1;
+  }
+  for (size_t i = 0; i < s.contacts.size(); ++i) {
+    const SnapshotContact& c = s.contacts[i];
+    const bool touching = c.flags & kTouching;
+    Rgb colour;
+    if (o.contacts == ContactShow::kState)
+      colour = !touching             ? open_colour()
+               : c.flags & kSlipping ? slipping_colour()
+               : c.flags & kBonded   ? bonded_colour()
+                                     : elastic_colour();
+    else if (o.contacts == ContactShow::kForce)
+      colour = ramp(c.fn / L.hi);
+    else
+      colour = ramp(std::abs(c.shear_disp) / L.hi);
+    const double w =
+        touching && fmax > 0 ? wmin + (wmax - wmin) * std::max(c.fn, 0.0) / fmax : wmin;
+    const Vec2 t(-c.normal.y(), c.normal.x());
+    const double half = 0.5 * std::max(c.length, 2.0 * wmin);
+    // Magnified like the blocks: the point moves with block a.
+    Vec2 centre = c.point;
+    if (o.magnify != 1.0 && c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size()) {
+      const SnapshotBlock& a = s.blocks[static_cast<size_t>(c.a)];
+      centre += (o.magnify - 1.0) * Vec2(a.x - a.x_ref, a.y - a.y_ref);
+    }
+    SceneBar bar;
+    bar.contact = static_cast<int>(i);
+    bar.colour = colour;
+    bar.corners[0] = centre - half * t - 0.5 * w * c.normal;
+    bar.corners[1] = centre + half * t - 0.5 * w * c.normal;
+    bar.corners[2] = centre + half * t + 0.5 * w * c.normal;
+    bar.corners[3] = centre - half * t + 0.5 * w * c.normal;
+    out.bars.push_back(bar);
+  }
+  out.caption += "   contact width: normal force, largest " + number(fmax) + " N/m";
+}
+
+// Displacement arrows at block centroids, the longest a tenth of the model's size.
+void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
+  if (!o.vectors) return;
+  double dmax = 0;
+  for (const auto& b : s.blocks) dmax = std::max(dmax, std::hypot(b.x - b.x_ref, b.y - b.y_ref));
+  if (dmax <= 0) return;
+  out.arrow_scale = 0.1 * size / dmax;
+  for (const auto& b : s.blocks) {
+    const Vec2 d(b.x - b.x_ref, b.y - b.y_ref);
+    if (d.norm() < 1e-3 * dmax) continue;
+    const Vec2 tail(b.x_ref + o.magnify * d.x(), b.y_ref + o.magnify * d.y());
+    out.arrows.push_back({tail, tail + out.arrow_scale * d});
+  }
+  out.caption += "   arrows: largest displacement " + number(dmax) + " m";
+}
+}  // namespace
+
+Scene build_scene(const Snapshot& s, const ViewOptions& o) {
+  Scene out;
+  out.title = o.title.empty() ? s.title : o.title;
+  char buf[120];
+  std::snprintf(buf, sizeof buf, "cycle %llu   time %.4g s   ratio %.2e",
+                static_cast<unsigned long long>(s.cycle), s.time, s.ratio);
+  out.caption = buf;
+  if (o.magnify != 1.0) out.caption += "   displacements x" + number(o.magnify);
+  const double size = std::max((s.hi - s.lo).norm(), 1e-9);
+  add_blocks(s, o, out);
+  add_contacts(s, o, out, size);
+  add_arrows(s, o, out, size);
+  out.lo = s.lo, out.hi = s.hi;
+  // Magnified shapes may leave the box the live model fills.
+  for (const auto& p : out.polygons)
+    for (const Vec2& v : p.points) out.lo = out.lo.cwiseMin(v), out.hi = out.hi.cwiseMax(v);
+  if (o.has_window) out.lo = o.lo, out.hi = o.hi;
+  if (out.hi.x() <= out.lo.x()) out.hi.x() = out.lo.x() + 1;
+  if (out.hi.y() <= out.lo.y()) out.hi.y() = out.lo.y() + 1;
+  return out;
+}
+
+namespace {
+bool inside(const Vec2* pts, size_t n, Vec2 p) {
+  bool in = false;
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 &a = pts[i], &b = pts[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+}  // namespace
+
+int block_at(const Scene& scene, Vec2 p) {
+  for (const auto& poly : scene.polygons)
+    if (poly.points.size() >= 3 && inside(poly.points.data(), poly.points.size(), p))
+      return poly.block;
+  return -1;
+}
+
+int bar_at(const Scene& scene, Vec2 p) {
+  for (const auto& bar : scene.bars)
+    if (inside(bar.corners, 4, p)) return bar.contact;
+  return -1;
+}
+
+}  // namespace tessera::ui

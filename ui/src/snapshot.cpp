@@ -1,0 +1,121 @@
+// Copies the model into a snapshot for the view.
+#include "tessera/ui/snapshot.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "tessera/model.hpp"
+#include "tessera/script.hpp"
+
+namespace tessera::ui {
+
+namespace {
+std::string number(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+void copy_catalogue(const Model& m, Snapshot& s) {
+  s.groups = m.groups;
+  for (const Material& mat : m.materials)
+    s.materials.push_back({mat.name, {{"density", number(mat.density) + " kg/m³"}}});
+  for (const JointProperties& j : m.joints)
+    s.joints.push_back({j.name,
+                        {{"law", j.law},
+                         {"kn", number(j.kn) + " Pa/m"},
+                         {"ks", number(j.ks) + " Pa/m"},
+                         {"friction", number(j.friction) + "°"},
+                         {"cohesion", number(j.cohesion) + " Pa"},
+                         {"tension", number(j.tension) + " Pa"},
+                         {"dilation", number(j.dilation) + "°"}}});
+  // Boundary conditions: one entry per block with a fixity or a prescribed velocity.
+  const Blocks& B = m.blocks;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.fixity[b]) continue;
+    Entry e{"block " + std::to_string(B.id[b]), {}};
+    if (B.fixity[b] & kFixX) e.properties.push_back({"x velocity", number(B.fixed_vx[b]) + " m/s"});
+    if (B.fixity[b] & kFixY) e.properties.push_back({"y velocity", number(B.fixed_vy[b]) + " m/s"});
+    if (B.fixity[b] & kFixRot)
+      e.properties.push_back({"angular velocity", number(B.fixed_omega[b]) + " rad/s"});
+    s.conditions.push_back(std::move(e));
+  }
+  if (m.settings.gravity.norm() > 0)
+    s.conditions.push_back({"gravity",
+                            {{"gx", number(m.settings.gravity.x()) + " m/s²"},
+                             {"gy", number(m.settings.gravity.y()) + " m/s²"}}});
+}
+
+void copy_histories(const Model& m, Snapshot& s) {
+  const Histories& h = m.histories;
+  for (const auto& series : h.series) s.history_labels.push_back(series.label);
+  s.history_values.assign(h.columns(), {});
+  const size_t rows = h.rows();
+  const size_t stride = rows > Snapshot::kHistoryRows
+                            ? (rows + Snapshot::kHistoryRows - 1) / Snapshot::kHistoryRows
+                            : 1;
+  for (size_t r = 0; r < rows; r += stride) {
+    // Always end on the newest sample.
+    const size_t row = r + stride >= rows ? rows - 1 : r;
+    s.history_cycles.push_back(static_cast<double>(h.cycles[row]));
+    for (size_t c = 0; c < h.columns(); ++c) s.history_values[c].push_back(h.at(row, c));
+  }
+}
+}  // namespace
+
+Snapshot make_snapshot(const Model& m, const std::string& title,
+                       const std::vector<StageRecord>& stages) {
+  Snapshot s;
+  s.title = title;
+  s.cycle = m.cycle, s.time = m.time, s.dt = m.dt, s.ratio = m.ratio;
+  const Blocks& B = m.blocks;
+  s.blocks.resize(B.size());
+  s.local.reserve(B.local_vertex.size());
+  bool first = true;
+  for (size_t b = 0; b < B.size(); ++b) {
+    SnapshotBlock& o = s.blocks[b];
+    o.id = B.id[b], o.group = B.group[b], o.material = B.material[b];
+    o.x = B.x[b], o.y = B.y[b], o.x_ref = B.x_ref[b], o.y_ref = B.y_ref[b], o.theta = B.theta[b];
+    o.vx = B.vx[b], o.vy = B.vy[b], o.omega = B.omega[b];
+    o.area = B.area[b], o.mass = B.mass[b], o.fixity = B.fixity[b];
+    o.vert_begin = static_cast<uint32_t>(s.local.size());
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
+      s.local.push_back(B.local_vertex[v]);
+      const Vec2& w = B.world_vertex[v];
+      s.lo = first ? w : s.lo.cwiseMin(w), s.hi = first ? w : s.hi.cwiseMax(w);
+      first = false;
+    }
+    o.vert_end = static_cast<uint32_t>(s.local.size());
+  }
+  const Contacts& C = m.contacts;
+  s.contacts.reserve(C.size());
+  for (size_t c = 0; c < C.size(); ++c) {
+    if (C.kind[c] == kLost) continue;
+    SnapshotContact o;
+    o.a = static_cast<int>(C.a[c]), o.b = static_cast<int>(C.b[c]);
+    o.point = C.point[c], o.normal = C.normal[c];
+    o.length = C.length[c], o.gap = C.gap[c], o.fn = C.fn[c], o.fs = C.fs[c];
+    o.shear_disp = C.shear_disp[c], o.flags = C.flags[c];
+    if (C.joint[c] < m.joints.size()) o.joint = m.joints[C.joint[c]].name;
+    s.contacts.push_back(std::move(o));
+  }
+  copy_catalogue(m, s);
+  for (const StageRecord& st : stages)
+    s.stages.push_back(
+        {st.command,
+         {{"at", st.file + ":" + std::to_string(st.line)},
+          {"cycles", std::to_string(st.first_cycle) + " to " + std::to_string(st.last_cycle)},
+          {"converged", st.converged ? "yes" : "no"}}});
+  copy_histories(m, s);
+  return s;
+}
+
+Vec2 shown_vertex(const Snapshot& s, const SnapshotBlock& b, uint32_t v, double magnify) {
+  const double t = b.theta * magnify;
+  const double c = std::cos(t), sn = std::sin(t);
+  const Vec2& p = s.local[v];
+  const Vec2 centre(b.x_ref + magnify * (b.x - b.x_ref), b.y_ref + magnify * (b.y - b.y_ref));
+  return centre + Vec2(c * p.x() - sn * p.y(), sn * p.x() + c * p.y());
+}
+
+}  // namespace tessera::ui

@@ -1,0 +1,112 @@
+// The worker's command loop, snapshots and pause.
+#include "tessera/ui/solver_worker.hpp"
+
+#include <QDir>
+#include <filesystem>
+
+#include "tessera/script.hpp"
+#include "tessera/state_io.hpp"
+#include "tessera/ui/figure_writer.hpp"
+
+namespace tessera::ui {
+
+SolverWorker::SolverWorker() {
+  openFile({}, QDir::temp().filePath("tessera_out"));
+}
+
+SolverWorker::~SolverWorker() = default;
+
+std::shared_ptr<const Snapshot> SolverWorker::takeSnapshot() {
+  std::lock_guard lock(mutex_);
+  return std::move(latest_);
+}
+
+void SolverWorker::setPaused(bool paused) {
+  {
+    std::lock_guard lock(mutex_);
+    paused_ = paused;
+  }
+  resume_.notify_all();
+}
+
+void SolverWorker::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+    paused_ = false;
+  }
+  resume_.notify_all();
+}
+
+void SolverWorker::publish() {
+  Model& m = interp_->model();
+  for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
+  auto snap = std::make_shared<Snapshot>(make_snapshot(m, interp_->title(), interp_->stages()));
+  snap->serial = ++serial_;
+  {
+    std::lock_guard lock(mutex_);
+    latest_ = std::move(snap);
+  }
+  emit snapshotReady();
+}
+
+// Called after every cycle on this thread: hands over a snapshot if asked, waits while paused.
+void SolverWorker::observe(const Model&) {
+  if (want_snapshot_.exchange(false)) publish();
+  if (paused_) {
+    publish();
+    std::unique_lock lock(mutex_);
+    resume_.wait(lock, [this] { return !paused_ || stop_; });
+  }
+}
+
+void SolverWorker::run(const QString& what, const std::function<void()>& body) {
+  stop_ = false;
+  busy_ = true;
+  emit started(what);
+  QString error;
+  try {
+    body();
+  } catch (const std::exception& e) {
+    error = QString::fromStdString(e.what());
+    emit logLine(error, true);
+  }
+  if (stop_) emit logLine("stopped", false);
+  stop_ = false, paused_ = false;
+  busy_ = false;
+  publish();
+  emit finished(error.isEmpty(), error);
+}
+
+void SolverWorker::openFile(const QString& path, const QString& outDir) {
+  auto log = [this](const std::string& s) {
+    emit logLine(QString::fromStdString(s), s.find("warning") != std::string::npos);
+  };
+  interp_ = std::make_unique<Interpreter>(outDir.toStdString(), log);
+  interp_->set_stop_flag(&stop_);
+  interp_->set_rollback(true);
+  interp_->set_progress_interval(5.0);
+  interp_->set_observer([this](const Model& m) { observe(m); });
+  interp_->set_figure_sink(figure_sink());
+  console_line_ = 0;
+  if (path.isEmpty()) return publish();
+  run("open " + path, [&] { interp_->run_file(path.toStdString()); });
+}
+
+void SolverWorker::execute(const QString& line) {
+  run(line, [&] {
+    emit logLine("> " + line, false);
+    interp_->execute(line.toStdString(), "<console>", ++console_line_);
+  });
+}
+
+void SolverWorker::saveState(const QString& path) {
+  run("save " + path, [&] {
+    std::filesystem::path p(path.toStdString());
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    save_state(interp_->model(), p.string());
+    emit logLine("saved " + path, false);
+  });
+}
+
+}  // namespace tessera::ui

@@ -1,0 +1,308 @@
+// VTK pipeline and camera handling of the viewport.
+#include "tessera/ui/vtk_view.hpp"
+
+#include <vtkActor.h>
+#include <vtkAxisActor2D.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkLegendScaleActor.h>
+#include <vtkLookupTable.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <QMouseEvent>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+#include <cmath>
+
+namespace tessera::ui {
+
+namespace {
+// A polydata of filled polygons with one RGB colour per cell.
+void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
+                   const std::vector<Rgb>& colours, double z) {
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetName("colour");
+  for (size_t i = 0; i < polys.size(); ++i) {
+    cells->InsertNextCell(static_cast<int>(polys[i].size()));
+    for (const Vec2& v : polys[i]) cells->InsertCellPoint(points->InsertNextPoint(v.x(), v.y(), z));
+    const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
+    rgb->InsertNextTypedTuple(c);
+  }
+  pd->Initialize();
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  pd->GetCellData()->SetScalars(rgb);
+}
+
+void set_direct_colours(vtkActor* actor, vtkPolyData* pd) {
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(pd);
+  mapper->SetColorModeToDirectScalars();
+  mapper->SetScalarModeToUseCellData();
+  actor->SetMapper(mapper);
+}
+
+void style_text(vtkTextActor* t, int size, bool bold) {
+  t->GetTextProperty()->SetColor(0, 0, 0);
+  t->GetTextProperty()->SetFontSize(size);
+  t->GetTextProperty()->SetBold(bold);
+}
+}  // namespace
+
+VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
+  window_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window_->SetOwnContext(false);
+  window_->SetFrameBlitModeToBlitToCurrent();
+  window_->AddRenderer(renderer_);
+  renderer_->SetBackground(1, 1, 1);
+  renderer_->GetActiveCamera()->ParallelProjectionOn();
+  set_direct_colours(blocks_actor_, blocks_);
+  set_direct_colours(edges_actor_, blocks_);
+  edges_actor_->GetMapper()->ScalarVisibilityOff();
+  edges_actor_->GetProperty()->SetRepresentationToWireframe();
+  edges_actor_->GetProperty()->SetColor(0.25, 0.25, 0.25);
+  set_direct_colours(bars_actor_, bars_);
+  set_direct_colours(arrows_actor_, arrows_);
+  arrows_actor_->GetMapper()->ScalarVisibilityOff();
+  arrows_actor_->GetProperty()->SetColor(0, 0, 0);
+  arrows_actor_->GetProperty()->SetLineWidth(1.5);
+  for (vtkActor* a :
+       {blocks_actor_.Get(), edges_actor_.Get(), bars_actor_.Get(), arrows_actor_.Get()}) {
+    // A flat 2D picture: colours as given, no shading.
+    a->GetProperty()->LightingOff();
+    renderer_->AddActor(a);
+  }
+  scalar_bar_->SetNumberOfLabels(5);
+  scalar_bar_->VisibilityOff();
+  scalar_bar_->SetPosition(0.88, 0.1);
+  scalar_bar_->SetWidth(0.1);
+  scalar_bar_->SetHeight(0.7);
+  for (vtkTextProperty* t :
+       {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
+        scalar_bar_->GetAnnotationTextProperty()}) {
+    t->SetColor(0, 0, 0);
+    t->ItalicOff();
+    t->ShadowOff();
+  }
+  renderer_->AddActor2D(scalar_bar_);
+  // Axes along the left and bottom edges labelled in model coordinates (metres).
+  scale_->AllAnnotationsOff();
+  scale_->SetLabelModeToXYCoordinates();
+  scale_->BottomAxisVisibilityOn();
+  scale_->LeftAxisVisibilityOn();
+  for (vtkAxisActor2D* axis : {scale_->GetBottomAxis(), scale_->GetLeftAxis()}) {
+    axis->GetProperty()->SetColor(0, 0, 0);
+    axis->GetLabelTextProperty()->SetColor(0, 0, 0);
+    axis->GetLabelTextProperty()->ItalicOff();
+    axis->GetLabelTextProperty()->ShadowOff();
+  }
+  scale_->SetBottomBorderOffset(45);
+  scale_->SetLeftBorderOffset(70);
+  renderer_->AddViewProp(scale_);
+  style_text(title_, 18, true);
+  title_->SetTextScaleModeToNone();
+  title_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title_->GetTextProperty()->SetJustificationToCentered();
+  title_->GetTextProperty()->SetVerticalJustificationToTop();
+  title_->SetPosition(0.5, 0.97);
+  style_text(caption_, 12, false);
+  caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  caption_->SetPosition(0.01, 0.01);
+  renderer_->AddActor2D(title_);
+  renderer_->AddActor2D(caption_);
+  setMouseTracking(false);
+}
+
+void VtkView::setDefaultSurfaceFormat() {
+  QSurfaceFormat f;
+  f.setRenderableType(QSurfaceFormat::OpenGL);
+  f.setVersion(3, 2);
+  f.setProfile(QSurfaceFormat::CoreProfile);
+  f.setDepthBufferSize(24);
+  f.setStencilBufferSize(8);
+  f.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+  QSurfaceFormat::setDefaultFormat(f);
+}
+
+VtkView::~VtkView() {
+  makeCurrent();
+  window_->Finalize();
+  doneCurrent();
+}
+
+void VtkView::initializeGL() {
+  window_->OpenGLInitContext();
+}
+
+void VtkView::resizeGL(int w, int h) {
+  const double r = devicePixelRatioF();
+  window_->SetSize(static_cast<int>(w * r), static_cast<int>(h * r));
+}
+
+void VtkView::paintGL() {
+  window_->SetReadyForRendering(true);
+  window_->SetIsCurrent(true);
+  window_->Render();
+}
+
+void VtkView::showScene(const Scene& scene, bool fit) {
+  const bool first = !has_scene_;
+  scene_ = scene;
+  has_scene_ = true;
+  rebuild();
+  if (first || fit) resetCamera();
+  update();
+}
+
+void VtkView::rebuild() {
+  std::vector<std::vector<Vec2>> polys;
+  std::vector<Rgb> colours;
+  for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
+  fill_polygons(blocks_, polys, colours, 0.0);
+  polys.clear(), colours.clear();
+  for (const auto& b : scene_.bars)
+    polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),
+        colours.push_back(b.colour);
+  fill_polygons(bars_, polys, colours, 0.01);
+  // Arrows as line cells: shaft and two head strokes.
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  auto line = [&](Vec2 a, Vec2 b) {
+    const vtkIdType ids[2] = {pts->InsertNextPoint(a.x(), a.y(), 0.02),
+                              pts->InsertNextPoint(b.x(), b.y(), 0.02)};
+    lines->InsertNextCell(2, ids);
+  };
+  for (const auto& a : scene_.arrows) {
+    const Vec2 d = a.head - a.tail;
+    const Vec2 n(-d.y(), d.x());
+    line(a.tail, a.head);
+    line(a.head, a.head - 0.25 * d + 0.12 * n);
+    line(a.head, a.head - 0.25 * d - 0.12 * n);
+  }
+  arrows_->Initialize();
+  arrows_->SetPoints(pts);
+  arrows_->SetLines(lines);
+  // Legend: the blocks' colour bar, or the contacts' when blocks are categorical.
+  const Legend& L = scene_.blocks_legend.continuous || !scene_.contacts_legend.continuous
+                        ? scene_.blocks_legend
+                        : scene_.contacts_legend;
+  vtkNew<vtkLookupTable> lut;
+  if (L.continuous) {
+    lut->SetNumberOfTableValues(kRampSamples);
+    for (int i = 0; i < kRampSamples; ++i) {
+      const Rgb c = ramp(i / double(kRampSamples - 1));
+      lut->SetTableValue(i, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+    }
+    lut->SetRange(L.lo, L.hi);
+  } else {
+    lut->IndexedLookupOn();
+    lut->SetNumberOfTableValues(static_cast<vtkIdType>(L.entries.size()));
+    for (size_t i = 0; i < L.entries.size(); ++i) {
+      const Rgb c = L.entries[i].second;
+      lut->SetTableValue(static_cast<vtkIdType>(i), c.r / 255.0, c.g / 255.0, c.b / 255.0);
+      lut->SetAnnotation(vtkVariant(static_cast<int>(i)), L.entries[i].first);
+    }
+  }
+  lut->Build();
+  scalar_bar_->SetLookupTable(lut);
+  scalar_bar_->SetTitle(L.title.c_str());
+  scalar_bar_->SetVisibility(!L.title.empty() && (L.continuous || !L.entries.empty()));
+  title_->SetInput(scene_.title.c_str());
+  caption_->SetInput(scene_.caption.c_str());
+}
+
+void VtkView::resetCamera() {
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  const Vec2 mid = 0.5 * (scene_.lo + scene_.hi), span = scene_.hi - scene_.lo;
+  cam->SetFocalPoint(mid.x(), mid.y(), 0);
+  cam->SetPosition(mid.x(), mid.y(), 10 * std::max(span.x(), span.y()) + 1);
+  cam->SetViewUp(0, 1, 0);
+  const double aspect = height() > 0 ? double(width()) / height() : 1.0;
+  // Room for the title, colour bar and scale axes around the model.
+  cam->SetParallelScale(0.62 * std::max(span.y(), span.x() / aspect / 0.8));
+  renderer_->ResetCameraClippingRange();
+  update();
+}
+
+Vec2 VtkView::modelPoint(const QPoint& pixel) {
+  const double r = devicePixelRatioF();
+  renderer_->SetDisplayPoint(pixel.x() * r, (height() - pixel.y()) * r, 0);
+  renderer_->DisplayToWorld();
+  const double* w = renderer_->GetWorldPoint();
+  return {w[0] / w[3], w[1] / w[3]};
+}
+
+QPoint VtkView::pixelOf(Vec2 p) {
+  renderer_->SetWorldPoint(p.x(), p.y(), 0, 1);
+  renderer_->WorldToDisplay();
+  const double* d = renderer_->GetDisplayPoint();
+  const double r = devicePixelRatioF();
+  return {static_cast<int>(std::lround(d[0] / r)),
+          static_cast<int>(std::lround(height() - d[1] / r))};
+}
+
+void VtkView::visibleWindow(Vec2& lo, Vec2& hi) {
+  const Vec2 a = modelPoint(QPoint(0, height())), b = modelPoint(QPoint(width(), 0));
+  lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+}
+
+void VtkView::mousePressEvent(QMouseEvent* e) {
+  press_ = last_ = e->pos();
+  button_ = e->button();
+  dragged_ = false;
+}
+
+void VtkView::mouseMoveEvent(QMouseEvent* e) {
+  if (button_ == Qt::NoButton) return;
+  const QPoint d = e->pos() - last_;
+  if ((e->pos() - press_).manhattanLength() > 3) dragged_ = true;
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  if (button_ == Qt::LeftButton) {
+    // Pan: move the camera by the model distance the cursor moved.
+    const Vec2 a = modelPoint(last_), b = modelPoint(e->pos());
+    const Vec2 shift = a - b;
+    double f[3], p[3];
+    cam->GetFocalPoint(f), cam->GetPosition(p);
+    cam->SetFocalPoint(f[0] + shift.x(), f[1] + shift.y(), f[2]);
+    cam->SetPosition(p[0] + shift.x(), p[1] + shift.y(), p[2]);
+  } else if (button_ == Qt::RightButton) {
+    cam->Azimuth(-0.4 * d.x());
+    cam->Elevation(0.4 * d.y());
+    cam->OrthogonalizeViewUp();
+  }
+  last_ = e->pos();
+  renderer_->ResetCameraClippingRange();
+  update();
+}
+
+void VtkView::mouseReleaseEvent(QMouseEvent* e) {
+  if (!dragged_ && button_ == Qt::LeftButton && has_scene_) {
+    const Vec2 p = modelPoint(e->pos());
+    const int contact = bar_at(scene_, p);
+    emit picked(contact >= 0 ? -1 : block_at(scene_, p), contact);
+  }
+  button_ = Qt::NoButton;
+}
+
+void VtkView::wheelEvent(QWheelEvent* e) {
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  const double steps = e->angleDelta().y() / 120.0;
+  cam->SetParallelScale(cam->GetParallelScale() * std::pow(0.85, steps));
+  update();
+}
+
+}  // namespace tessera::ui
