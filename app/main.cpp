@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QGuiApplication>
+#include <cstdio>
 #include <cstdlib>
 
 #include "batch.hpp"
@@ -27,6 +28,11 @@ int main(int argc, char** argv) {
   if (!batch.empty()) {
     // Headless: fonts for figures without a display.
     if (!std::getenv("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Qt's notes about the desktop session mean nothing to a batch run.
+    qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& msg) {
+      if (type >= QtCriticalMsg || !msg.startsWith("QStandardPaths:"))
+        std::fprintf(stderr, "%s\n", qPrintable(msg));
+    });
     QGuiApplication gui(argc, argv);
     return tessera::app::run_batch(batch, out_dir, threads, quiet);
   }

@@ -1,10 +1,13 @@
 // Every example runs headless through the tessera executable; its results are checked as
 // numbers against closed-form estimates, with tolerances, never as text.
 #include <QDir>
+#include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPainter>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <QtTest>
@@ -33,6 +36,36 @@ Run run_example(const QString& name, const QStringList& extra, QTemporaryDir& di
   r.out = p.readAllStandardOutput();
   r.err = p.readAllStandardError();
   return r;
+}
+
+// A figure a script wrote: the size asked for, and a drawing, not a blank page.
+void check_figure(const QString& path, QSize size) {
+  QVERIFY2(QFile::exists(path), qPrintable(path));
+  QImage img;
+  if (path.endsWith(".svg")) {
+    QSvgRenderer svg(path);
+    QVERIFY(svg.isValid());
+    QCOMPARE(svg.viewBoxF().size(), QSizeF(size));
+    img = QImage(size, QImage::Format_ARGB32);
+    img.fill(Qt::white);
+    QPainter p(&img);
+    svg.render(&p);
+  } else if (path.endsWith(".pdf")) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    QVERIFY(bytes.startsWith("%PDF-") && bytes.contains("%%EOF") && bytes.size() > 2000);
+    return;
+  } else {
+    img = QImage(path);
+    QCOMPARE(img.size(), size);
+  }
+  long coloured = 0;
+  for (int y = 0; y < img.height(); y += 4)
+    for (int x = 0; x < img.width(); x += 4) coloured += img.pixel(x, y) != qRgb(255, 255, 255);
+  const long samples = long(img.width() / 4) * long(img.height() / 4);
+  QVERIFY2(coloured > samples / 20,
+           qPrintable(QString("%1 of %2 drawn").arg(coloured).arg(samples)));
 }
 
 // history.csv as columns by heading.
@@ -182,6 +215,8 @@ class TestExamples : public QObject {
     QVERIFY(h["crown"].size() > 100);
     QVERIFY(QFile::exists(r.dir + "/before.sav"));
     QVERIFY(read_summary(r.dir)["blocks"].toInt() > 100);
+    check_figure(r.dir + "/tunnel_displacement.png", QSize(1600, 1200));
+    check_figure(r.dir + "/tunnel_contacts.pdf", QSize(1600, 1000));
   }
   void rockSlopeWedgeSlidesOnTheBedding() {
     const Run r = run_example("rock_slope", {}, dir_);
@@ -202,6 +237,7 @@ class TestExamples : public QObject {
     auto h = read_history(r.dir);
     QVERIFY(read_summary(r.dir)["final_ratio"].toDouble() <= 1e-6);
     QVERIFY(std::abs(h["crown"].back()) < 5e-4);
+    check_figure(r.dir + "/arch_forces.svg", QSize(1200, 800));
   }
   // Every example has its numbers checked above: a new example needs a test here too.
   void everyExampleIsChecked() {
@@ -226,5 +262,5 @@ class TestExamples : public QObject {
   }
 };
 
-QTEST_GUILESS_MAIN(TestExamples)
+QTEST_MAIN(TestExamples)  // a QGuiApplication: figures are drawn back to check them
 #include "test_examples.moc"

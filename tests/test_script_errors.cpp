@@ -131,6 +131,56 @@ class TestScriptErrors : public QObject {
     r.run(std::string(kBase) + "set w = 2*5\nset h = w/10\nblock 0,0 w,0 w,h 0,h material=rock");
     QCOMPARE(r.model().blocks.area[0], 10.0);
   }
+  // The figure command checks its request before handing it to the program's renderer.
+  void figureRequestsAreChecked() {
+    const std::string blk = std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\n";
+    QVERIFY(has(error_of(blk + "figure a.jpg"), "test:5: 'a.jpg': a figure is written as .png"));
+    QVERIFY(has(error_of(blk + "figure a.png colour=displacment"),
+                "not something blocks are coloured by (did you mean 'displacement'?)"));
+    QVERIFY(has(error_of(blk + "figure a.png contacts=forces"), "(did you mean 'force'?)"));
+    QVERIFY(has(error_of(blk + "figure a.png window=1,1,0,0"), "second corner"));
+    QVERIFY(has(error_of(blk + "figure a.png size=4,4"), "between 16 and 16384"));
+    QVERIFY(has(error_of(blk + "figure a.png"), "this run has no renderer"));
+    // With a renderer, it gets the request as written.
+    ScriptRun r;
+    FigureRequest got;
+    r.interp->set_figure_sink([&](const FigureRequest& f, const Model&) { got = f; });
+    r.run(blk +
+          "figure out.svg size=640,480 colour=ydisp contacts=shear vectors=on magnify=50 "
+          "window=-1,-1,2,2 title=\"Fig 1\"");
+    QCOMPARE(got.width, 640);
+    QCOMPARE(got.height, 480);
+    QVERIFY(got.view.colour == ColourBy::kYDisp && got.view.contacts == ContactShow::kShear);
+    QVERIFY(got.view.vectors && got.view.magnify == 50 && got.view.has_window);
+    QCOMPARE(got.view.title, std::string("Fig 1"));
+    QVERIFY(QString::fromStdString(got.path).endsWith("out.svg"));
+  }
+  // With rollback on, a failing command leaves the model as it was before it.
+  void rollbackKeepsTheModel() {
+    ScriptRun r;
+    r.interp->set_rollback(true);
+    r.run(std::string(kBase) +
+          "joint assign j\nblock 0,0 4,0 4,1 0,1 material=rock\n"
+          "fix block=1\nblock 0,1 1,1 1,2 0,2 material=rock\n"
+          "gravity 0 -10\nstep 20");
+    const auto before = tessera::test::state_hash(r.model());
+    const uint64_t cycle = r.model().cycle;
+    QVERIFY(has(error_of_in(r, "timestep fixed 1\nstep 100"), "diverged"));
+    QCOMPARE(r.model().cycle, cycle);
+    QCOMPARE(tessera::test::state_hash(r.model()), before);
+    QVERIFY(has(error_of_in(r, "block 5,5 6,5 material=rock"), "test:"));
+    QCOMPARE(r.model().blocks.size(), size_t(2));
+  }
+
+ private:
+  static std::string error_of_in(ScriptRun& r, const std::string& text) {
+    try {
+      r.run(text);
+    } catch (const ScriptError& e) {
+      return e.what();
+    }
+    return {};
+  }
 };
 
 QTEST_APPLESS_MAIN(TestScriptErrors)

@@ -86,7 +86,7 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   const QRectF title(area.left() + m, area.top() + 0.5 * m, area.width() - 2 * m, 1.6 * font_px);
   const double legend_w = std::min(area.width() * 0.22, 16 * font_px);
   QRectF plot(area.left() + m, title.bottom() + 0.5 * m, area.width() - legend_w - 3 * m,
-              area.height() - title.height() - 5.5 * m);
+              area.height() - title.height() - 6.5 * m);
   QFont bold = font;
   bold.setBold(true);
   p.setFont(bold);
@@ -143,8 +143,8 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   p.drawLine(sb + QPointF(0, -0.3 * m), sb + QPointF(0, 0.3 * m));
   p.drawLine(sb + QPointF(k * len, -0.3 * m), sb + QPointF(k * len, 0.3 * m));
   p.drawText(sb + QPointF(k * len + 0.5 * m, 0.35 * font_px), number(len) + " m");
-  p.drawText(QRectF(area.left() + m, plot.bottom() + 2.3 * m, area.width() - 2 * m, 1.5 * font_px),
-             Qt::AlignLeft, QString::fromStdString(s.caption));
+  p.drawText(QRectF(area.left() + m, plot.bottom() + 2.3 * m, area.width() - 2 * m, 3 * font_px),
+             Qt::AlignLeft | Qt::TextWordWrap, QString::fromStdString(s.caption));
   p.restore();
 }
 

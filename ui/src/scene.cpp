@@ -93,8 +93,18 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
 void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
   if (o.contacts == ContactShow::kOff || s.contacts.empty()) return;
   double fmax = 0, smax = 0;
-  for (const auto& c : s.contacts)
+  std::vector<double> forces;
+  for (const auto& c : s.contacts) {
     fmax = std::max(fmax, c.fn), smax = std::max(smax, std::abs(c.shear_disp));
+    if (c.fn > 0) forces.push_back(c.fn);
+  }
+  // Full width at the 98th percentile of the forces, so one spike does not thin all the rest.
+  double fwide = fmax;
+  if (forces.size() > 50) {
+    const auto k = forces.begin() + static_cast<std::ptrdiff_t>(0.98 * double(forces.size()));
+    std::nth_element(forces.begin(), k, forces.end());
+    fwide = *k;
+  }
   double mean_length = 0;
   for (const auto& c : s.contacts) mean_length += c.length;
   mean_length /= static_cast<double>(s.contacts.size());
@@ -128,24 +138,30 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
       colour = ramp(std::abs(c.shear_disp) / L.hi);
     const double w =
         touching && fmax > 0 ? wmin + (wmax - wmin) * std::max(c.fn, 0.0) / fmax : wmin;
-    const Vec2 t(-c.normal.y(), c.normal.x());
-    const double half = 0.5 * std::max(c.length, 2.0 * wmin);
-    // Magnified like the blocks: the point moves with block a.
-    Vec2 centre = c.point;
+    // Along the stretch of joint the contact stands for; a lone contact gets a short bar.
+    Vec2 a = c.from, b = c.to;
+    if ((b - a).norm() < 2.0 * wmin) {
+      const Vec2 t(-c.normal.y(), c.normal.x());
+      const double half = 0.5 * std::max(c.length, 2.0 * wmin);
+      a = c.point - half * t, b = c.point + half * t;
+    }
+    // Magnified like the blocks: the bar moves with block a.
     if (o.magnify != 1.0 && c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size()) {
-      const SnapshotBlock& a = s.blocks[static_cast<size_t>(c.a)];
-      centre += (o.magnify - 1.0) * Vec2(a.x - a.x_ref, a.y - a.y_ref);
+      const SnapshotBlock& owner = s.blocks[static_cast<size_t>(c.a)];
+      const Vec2 shift = (o.magnify - 1.0) * Vec2(owner.x - owner.x_ref, owner.y - owner.y_ref);
+      a += shift, b += shift;
     }
     SceneBar bar;
     bar.contact = static_cast<int>(i);
     bar.colour = colour;
-    bar.corners[0] = centre - half * t - 0.5 * w * c.normal;
-    bar.corners[1] = centre + half * t - 0.5 * w * c.normal;
-    bar.corners[2] = centre + half * t + 0.5 * w * c.normal;
-    bar.corners[3] = centre - half * t + 0.5 * w * c.normal;
+    bar.corners[0] = a - 0.5 * w * c.normal;
+    bar.corners[1] = b - 0.5 * w * c.normal;
+    bar.corners[2] = b + 0.5 * w * c.normal;
+    bar.corners[3] = a + 0.5 * w * c.normal;
     out.bars.push_back(bar);
   }
-  out.caption += "   contact width: normal force, largest " + number(fmax) + " N/m";
+  out.caption += "   contact width: normal force, full at " + number(fwide) + " N/m (largest " +
+                 number(fmax) + ")";
 }
 
 // Displacement arrows at block centroids, the longest a tenth of the model's size.

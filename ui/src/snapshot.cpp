@@ -1,6 +1,7 @@
 // Copies the model into a snapshot for the view.
 #include "tessera/ui/snapshot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -61,6 +62,30 @@ void copy_histories(const Model& m, Snapshot& s) {
     for (size_t c = 0; c < h.columns(); ++c) s.history_values[c].push_back(h.at(row, c));
   }
 }
+// Along each interface, every contact's stretch reaches half way to its neighbours.
+void set_joint_stretches(const Contacts& C, Snapshot& s) {
+  if (C.pair_begin.empty() || C.pair_begin.back() != C.size()) return;
+  // Snapshot index of each live contact.
+  std::vector<int> at(C.size(), -1);
+  for (size_t c = 0, k = 0; c < C.size(); ++c)
+    if (C.kind[c] != kLost) at[c] = static_cast<int>(k++);
+  std::vector<std::pair<double, int>> line;
+  for (size_t p = 0; p + 1 < C.pair_begin.size(); ++p) {
+    line.clear();
+    Vec2 t = Vec2::Zero();
+    for (uint32_t c = C.pair_begin[p]; c < C.pair_begin[p + 1]; ++c) {
+      if (at[c] < 0) continue;
+      if (line.empty()) t = Vec2(-C.normal[c].y(), C.normal[c].x());
+      line.emplace_back(C.point[c].dot(t), at[c]);
+    }
+    std::sort(line.begin(), line.end());
+    for (size_t i = 0; i < line.size(); ++i) {
+      SnapshotContact& o = s.contacts[static_cast<size_t>(line[i].second)];
+      if (i > 0) o.from = o.point - 0.5 * (line[i].first - line[i - 1].first) * t;
+      if (i + 1 < line.size()) o.to = o.point + 0.5 * (line[i + 1].first - line[i].first) * t;
+    }
+  }
+}
 }  // namespace
 
 Snapshot make_snapshot(const Model& m, const std::string& title,
@@ -97,8 +122,10 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     o.length = C.length[c], o.gap = C.gap[c], o.fn = C.fn[c], o.fs = C.fs[c];
     o.shear_disp = C.shear_disp[c], o.flags = C.flags[c];
     if (C.joint[c] < m.joints.size()) o.joint = m.joints[C.joint[c]].name;
+    o.from = o.to = o.point;
     s.contacts.push_back(std::move(o));
   }
+  set_joint_stretches(C, s);
   copy_catalogue(m, s);
   for (const StageRecord& st : stages)
     s.stages.push_back(

@@ -30,6 +30,9 @@ struct SnapshotBlock {
 struct SnapshotContact {
   int a = 0, b = 0;  // block indices
   Vec2 point = Vec2::Zero(), normal = Vec2::Zero();
+  // The stretch of joint the contact stands for: from the point half way to its neighbours
+  // along the same interface (§5.2.2's L = RQ1/2 + RQ2/2); both the point for a lone contact.
+  Vec2 from = Vec2::Zero(), to = Vec2::Zero();
   double length = 0, gap = 0, fn = 0, fs = 0, shear_disp = 0;
   uint8_t flags = 0;
   std::string joint;  // joint property name
