@@ -36,6 +36,13 @@ int main(int argc, char** argv) {
     QGuiApplication gui(argc, argv);
     return tessera::app::run_batch(batch, out_dir, threads, quiet);
   }
+  if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") &&
+      !std::getenv("QT_QPA_PLATFORM")) {
+    std::fprintf(stderr,
+                 "tessera: no display to open the window on; run a model headless with "
+                 "'tessera --batch FILE'\n");
+    return 2;
+  }
   tessera::ui::VtkView::setDefaultSurfaceFormat();
   QApplication gui(argc, argv);
   tessera::set_thread_count(threads);

@@ -254,7 +254,7 @@ void MainWindow::onStarted(const QString& what) {
   statusBar()->showMessage("running: " + what);
   progress_->setRange(0, 0);  // busy indicator
   progress_->show();
-  speed_cycle_ = shown_ ? shown_->cycle : 0;
+  speed_cycle_ = step_from_ = shown_ ? shown_->cycle : 0;
   speed_ms_ = QDateTime::currentMSecsSinceEpoch();
 }
 
@@ -290,6 +290,14 @@ void MainWindow::display(std::shared_ptr<const Snapshot> s) {
         QString("%1 cycles/s")
             .arg(1000.0 * double(s->cycle - speed_cycle_) / double(now - speed_ms_), 0, 'f', 0));
     speed_cycle_ = s->cycle, speed_ms_ = now;
+  }
+  // Progress of a step: cycles done of those asked for; a solve shows a busy bar.
+  if (running_.startsWith("step ")) {
+    const qint64 n = running_.mid(5).trimmed().toLongLong();
+    if (n > 0 && s->cycle >= step_from_) {
+      progress_->setRange(0, 1000);
+      progress_->setValue(int(std::min<qint64>(1000, 1000 * qint64(s->cycle - step_from_) / n)));
+    }
   }
   shown_ = std::move(s);
   cycle_label_->setText(QString("cycle %1").arg(shown_->cycle));

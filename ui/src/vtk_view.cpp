@@ -299,9 +299,16 @@ void VtkView::mouseReleaseEvent(QMouseEvent* e) {
 }
 
 void VtkView::wheelEvent(QWheelEvent* e) {
+  // Zoom about the cursor: the model point under it stays put.
   vtkCamera* cam = renderer_->GetActiveCamera();
-  const double steps = e->angleDelta().y() / 120.0;
-  cam->SetParallelScale(cam->GetParallelScale() * std::pow(0.85, steps));
+  const QPoint at = e->position().toPoint();
+  const Vec2 before = modelPoint(at);
+  cam->SetParallelScale(cam->GetParallelScale() * std::pow(0.85, e->angleDelta().y() / 120.0));
+  const Vec2 shift = before - modelPoint(at);
+  double f[3], p[3];
+  cam->GetFocalPoint(f), cam->GetPosition(p);
+  cam->SetFocalPoint(f[0] + shift.x(), f[1] + shift.y(), f[2]);
+  cam->SetPosition(p[0] + shift.x(), p[1] + shift.y(), p[2]);
   update();
 }
 

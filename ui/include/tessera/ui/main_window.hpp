@@ -102,7 +102,7 @@ class MainWindow : public QMainWindow {
   QString script_path_;
   QStringList journal_;  // the opened script and every command that ran since: "Save script"
   QString running_;
-  uint64_t speed_cycle_ = 0;
+  uint64_t speed_cycle_ = 0, step_from_ = 0;
   qint64 speed_ms_ = 0;
   bool fit_next_ = true;
 };
