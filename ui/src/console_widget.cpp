@@ -32,8 +32,11 @@ ConsoleWidget::ConsoleWidget(QWidget* parent)
 }
 
 void ConsoleWidget::append(const QString& text, bool error) {
-  if (error)
-    log_->appendHtml("<span style='color:#c00000'>" + text.toHtmlEscaped() + "</span>");
+  // Errors red, warnings amber, the rest plain.
+  const char* colour = error ? "#c00000" : text.contains("warning:") ? "#a06000" : nullptr;
+  if (colour)
+    log_->appendHtml(QString("<span style='color:%1'>").arg(colour) + text.toHtmlEscaped() +
+                     "</span>");
   else
     log_->appendPlainText(text);
 }

@@ -70,7 +70,8 @@ void HistoryCharts::update(const Snapshot& s) {
     const double x1 = s.history_cycles.empty() ? 1.0 : std::max(1.0, s.history_cycles.back());
     charts_[i].x->setRange(s.history_cycles.empty() ? 0.0 : s.history_cycles.front(), x1);
     const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(1e-12, 0.05 * std::abs(hi));
-    charts_[i].y->setRange(lo - pad, hi + pad);
+    // No negative axis for a quantity that never goes below zero (ratio, energy, time).
+    charts_[i].y->setRange(lo >= 0 && lo - pad < 0 ? 0.0 : lo - pad, hi + pad);
   }
 }
 

@@ -285,7 +285,9 @@ void MainWindow::frame() {
 
 void MainWindow::display(std::shared_ptr<const Snapshot> s) {
   const qint64 now = QDateTime::currentMSecsSinceEpoch();
-  if (now > speed_ms_ + 500 && s->cycle >= speed_cycle_) {
+  if (!worker_->busy())
+    speed_label_->clear();
+  else if (now > speed_ms_ + 500 && s->cycle >= speed_cycle_) {
     speed_label_->setText(
         QString("%1 cycles/s")
             .arg(1000.0 * double(s->cycle - speed_cycle_) / double(now - speed_ms_), 0, 'f', 0));

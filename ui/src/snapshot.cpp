@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "tessera/model.hpp"
 #include "tessera/script.hpp"
@@ -30,15 +31,38 @@ void copy_catalogue(const Model& m, Snapshot& s) {
                          {"cohesion", number(j.cohesion) + " Pa"},
                          {"tension", number(j.tension) + " Pa"},
                          {"dilation", number(j.dilation) + "°"}}});
-  // Boundary conditions: one entry per block with a fixity or a prescribed velocity.
+  // Boundary conditions: one entry per kind of condition (what is fixed, at which velocities),
+  // listing the blocks it holds.
   const Blocks& B = m.blocks;
+  std::map<std::string, std::pair<Entry, std::vector<int>>> kinds;
   for (size_t b = 0; b < B.size(); ++b) {
     if (!B.fixity[b]) continue;
-    Entry e{"block " + std::to_string(B.id[b]), {}};
-    if (B.fixity[b] & kFixX) e.properties.push_back({"x velocity", number(B.fixed_vx[b]) + " m/s"});
-    if (B.fixity[b] & kFixY) e.properties.push_back({"y velocity", number(B.fixed_vy[b]) + " m/s"});
+    Entry e;
+    std::string what;
+    if (B.fixity[b] & kFixX)
+      what += "x ", e.properties.push_back({"x velocity", number(B.fixed_vx[b]) + " m/s"});
+    if (B.fixity[b] & kFixY)
+      what += "y ", e.properties.push_back({"y velocity", number(B.fixed_vy[b]) + " m/s"});
     if (B.fixity[b] & kFixRot)
-      e.properties.push_back({"angular velocity", number(B.fixed_omega[b]) + " rad/s"});
+      what += "rotation ",
+          e.properties.push_back({"angular velocity", number(B.fixed_omega[b]) + " rad/s"});
+    bool moving = false;
+    for (const auto& [k, v] : e.properties) moving |= v.rfind("0 ", 0) != 0;
+    e.name = (moving ? "velocity on " : "fixed ") + what.substr(0, what.size() - 1);
+    std::string key = e.name;
+    for (const auto& [k, v] : e.properties) key += "|" + v;
+    auto& slot = kinds[key];
+    if (slot.second.empty()) slot.first = std::move(e);
+    slot.second.push_back(B.id[b]);
+  }
+  for (auto& [key, kind] : kinds) {
+    auto& [e, ids] = kind;
+    std::string list;
+    for (size_t i = 0; i < ids.size() && i < 40; ++i)
+      list += (i ? ", " : "") + std::to_string(ids[i]);
+    if (ids.size() > 40) list += ", ...";
+    e.properties.insert(e.properties.begin(),
+                        {{"blocks", std::to_string(ids.size())}, {"ids", list}});
     s.conditions.push_back(std::move(e));
   }
   if (m.settings.gravity.norm() > 0)

@@ -79,9 +79,7 @@ void SolverWorker::run(const QString& what, const std::function<void()>& body) {
 }
 
 void SolverWorker::openFile(const QString& path, const QString& outDir) {
-  auto log = [this](const std::string& s) {
-    emit logLine(QString::fromStdString(s), s.find("warning") != std::string::npos);
-  };
+  auto log = [this](const std::string& s) { emit logLine(QString::fromStdString(s), false); };
   interp_ = std::make_unique<Interpreter>(outDir.toStdString(), log);
   interp_->set_stop_flag(&stop_);
   interp_->set_rollback(true);

@@ -87,8 +87,9 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
     renderer_->AddActor(a);
   }
   scalar_bar_->SetNumberOfLabels(5);
+  scalar_bar_->UnconstrainedFontSizeOn();
   scalar_bar_->VisibilityOff();
-  scalar_bar_->SetPosition(0.88, 0.1);
+  scalar_bar_->SetPosition(0.85, 0.1);
   scalar_bar_->SetWidth(0.1);
   scalar_bar_->SetHeight(0.7);
   for (vtkTextProperty* t :
@@ -97,6 +98,8 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
     t->SetColor(0, 0, 0);
     t->ItalicOff();
     t->ShadowOff();
+    t->BoldOff();
+    t->SetFontSize(13);
   }
   renderer_->AddActor2D(scalar_bar_);
   // Axes along the left and bottom edges labelled in model coordinates (metres).
@@ -109,6 +112,7 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
     axis->GetLabelTextProperty()->SetColor(0, 0, 0);
     axis->GetLabelTextProperty()->ItalicOff();
     axis->GetLabelTextProperty()->ShadowOff();
+    axis->SetFontFactor(1.0);
   }
   scale_->SetBottomBorderOffset(45);
   scale_->SetLeftBorderOffset(70);

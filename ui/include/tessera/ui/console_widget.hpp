@@ -12,6 +12,7 @@ class ConsoleWidget : public QWidget {
   Q_OBJECT
  public:
   explicit ConsoleWidget(QWidget* parent = nullptr);
+  // Adds a line: red if `error`, amber if it is a warning.
   void append(const QString& text, bool error);
   QString text() const { return log_->toPlainText(); }
   QLineEdit* input() { return input_; }
