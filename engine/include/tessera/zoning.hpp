@@ -1,0 +1,27 @@
+// Zoning: a block cut into the uniform-strain triangles of a deformable block (§5.2.1).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+
+namespace tessera {
+
+struct ZoneMesh {
+  std::vector<Vec2> nodes;
+  std::vector<uint8_t> on_boundary;                // per node: lies on the block's outline
+  std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise
+  double min_angle = 0.0;                          // smallest zone angle, degrees
+  double max_edge = 0.0;                           // longest zone edge
+};
+
+// Triangulates a simple polygon (counter-clockwise, convex or not) with CGAL's constrained
+// Delaunay refinement: zone edges no longer than `max_edge`, angles of about 20 degrees or more
+// where the outline allows. Every polygon vertex is a node. Throws std::invalid_argument for a
+// degenerate outline or a size that would make more than `max_zones` zones.
+ZoneMesh zone_polygon(const std::vector<Vec2>& polygon, double max_edge,
+                      size_t max_zones = 2000000);
+
+}  // namespace tessera

@@ -1,0 +1,195 @@
+// The zone constitutive models and their registry.
+#include "tessera/zone_model.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace tessera {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Elastic trial stress: ds = 2G de + (K - 2G/3) tr(de) I, with dezz = 0 in plane strain.
+void elastic_step(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s) {
+  const double lambda = p.bulk - 2.0 * p.shear / 3.0;
+  const double vol = de.xx + de.yy;
+  s.xx += 2.0 * p.shear * de.xx + lambda * vol;
+  s.yy += 2.0 * p.shear * de.yy + lambda * vol;
+  s.zz += lambda * vol;
+  s.xy += 2.0 * p.shear * de.xy;
+}
+
+class NullModel final : public ZoneModel {
+ public:
+  const char* name() const override { return "null"; }
+  void update(const ZoneProperties&, const StrainIncrement&, ZoneStress& s,
+              uint8_t& state) const override {
+    s = ZoneStress{};
+    state = 0;
+  }
+  bool solid() const override { return false; }
+};
+
+class ElasticModel final : public ZoneModel {
+ public:
+  const char* name() const override { return "elastic"; }
+  void update(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s,
+              uint8_t& state) const override {
+    elastic_step(p, de, s);
+    state &= kShearPast | kTensionPast;
+  }
+};
+
+// Mohr-Coulomb with tension cut-off (FLAC's formulation): principal stresses s1 <= s2 <= s3
+// (s1 the most compressive); shear yield fs = s1 - s3 Nphi + 2c sqrt(Nphi), tension ft =
+// sigma_t - s3; the corrections follow the non-associated flow rule with Npsi.
+class MohrCoulombModel final : public ZoneModel {
+ public:
+  const char* name() const override { return "mohr-coulomb"; }
+  void update(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s,
+              uint8_t& state) const override {
+    state &= kShearPast | kTensionPast;
+    elastic_step(p, de, s);
+    // Principal stresses: two in the plane, zz out of it.
+    double a = 0, b = 0, angle = 0;
+    principal_2d(s, a, b, angle);
+    std::array<double, 3> sig{a, b, s.zz};
+    std::array<int, 3> order{0, 1, 2};  // which of (a, b, zz) is s1, s2, s3
+    std::sort(order.begin(), order.end(), [&](int i, int j) { return sig[i] < sig[j]; });
+    double s1 = sig[order[0]], s2 = sig[order[1]], s3 = sig[order[2]];
+    const double sphi = std::sin(p.friction * kDeg), spsi = std::sin(p.dilation * kDeg);
+    const double nphi = (1 + sphi) / (1 - sphi), npsi = (1 + spsi) / (1 - spsi);
+    const double rn = std::sqrt(nphi);
+    // The tensile strength cannot exceed the apex of the shear cone.
+    double st = p.tension;
+    if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
+    const double a1 = p.bulk + 4.0 * p.shear / 3.0, a2 = p.bulk - 2.0 * p.shear / 3.0;
+    const double fs = s1 - s3 * nphi + 2.0 * p.cohesion * rn;
+    const double ft = st - s3;
+    if (fs >= 0 && ft >= 0) return;
+    // Which failure: the line h = 0 bisects shear and tension regions near the corner.
+    const double alpha_p = std::sqrt(1 + nphi * nphi) + nphi;
+    const double sigma_p = st * nphi - 2.0 * p.cohesion * rn;
+    const double h = s3 - st + alpha_p * (s1 - sigma_p);
+    if (fs < 0 && h <= 0) {
+      const double ls = fs / ((a1 - a2 * npsi) - (a2 - a1 * npsi) * nphi);
+      s1 -= ls * (a1 - a2 * npsi);
+      s2 -= ls * a2 * (1 - npsi);
+      s3 -= ls * (a2 - a1 * npsi);
+      state |= kShearNow | kShearPast;
+    } else {
+      const double lt = ft / a1;
+      s1 += lt * a2;
+      s2 += lt * a2;
+      s3 += lt * a1;
+      state |= kTensionNow | kTensionPast;
+    }
+    // Back to x, y: the in-plane principal directions are unchanged.
+    std::array<double, 3> out{};
+    out[order[0]] = s1, out[order[1]] = s2, out[order[2]] = s3;
+    const double c = std::cos(angle), sn = std::sin(angle);
+    s.xx = out[0] * c * c + out[1] * sn * sn;
+    s.yy = out[0] * sn * sn + out[1] * c * c;
+    s.xy = (out[0] - out[1]) * c * sn;
+    s.zz = out[2];
+  }
+};
+
+// Drucker-Prager (FLAC's form): fs = tau + q_phi sigma - k_phi with tau = sqrt(J2) and sigma
+// the mean stress; matched to Mohr-Coulomb's compression cone in plane strain
+// (q = tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3c / sqrt(9 + 12 tan^2 phi)); tension cut-off on
+// the mean stress.
+class DruckerPragerModel final : public ZoneModel {
+ public:
+  const char* name() const override { return "drucker-prager"; }
+  void update(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s,
+              uint8_t& state) const override {
+    state &= kShearPast | kTensionPast;
+    elastic_step(p, de, s);
+    const double tphi = std::tan(p.friction * kDeg), tpsi = std::tan(p.dilation * kDeg);
+    const double qphi = tphi / std::sqrt(9 + 12 * tphi * tphi);
+    const double kphi = 3 * p.cohesion / std::sqrt(9 + 12 * tphi * tphi);
+    const double qpsi = tpsi / std::sqrt(9 + 12 * tpsi * tpsi);
+    const double mean = (s.xx + s.yy + s.zz) / 3.0;
+    const double dx = s.xx - mean, dy = s.yy - mean, dz = s.zz - mean;
+    const double tau = std::sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + s.xy * s.xy);
+    double st = p.tension;
+    if (qphi > 0) st = std::min(st, kphi / qphi);
+    const double fs = tau + qphi * mean - kphi;
+    const double ft = mean - st;
+    if (fs <= 0 && ft <= 0) return;
+    const double tau_p = kphi - qphi * st;
+    const double alpha_p = std::sqrt(1 + qphi * qphi) - qphi;
+    const double h = tau - tau_p - alpha_p * (mean - st);
+    double new_mean = mean, scale = 1.0;
+    if (fs > 0 && h > 0) {
+      const double lambda = fs / (p.shear + p.bulk * qphi * qpsi);
+      new_mean = mean - p.bulk * qpsi * lambda;
+      scale = tau > 0 ? std::max(0.0, (tau - p.shear * lambda) / tau) : 0.0;
+      state |= kShearNow | kShearPast;
+    } else {
+      new_mean = st;
+      state |= kTensionNow | kTensionPast;
+    }
+    s.xx = new_mean + scale * dx;
+    s.yy = new_mean + scale * dy;
+    s.zz = new_mean + scale * dz;
+    s.xy *= scale;
+  }
+};
+
+const NullModel kNull;
+const ElasticModel kElastic;
+const MohrCoulombModel kMohrCoulomb;
+const DruckerPragerModel kDruckerPrager;
+const std::array<const ZoneModel*, 4> kModels{&kNull, &kElastic, &kMohrCoulomb, &kDruckerPrager};
+}  // namespace
+
+void principal_2d(const ZoneStress& s, double& s1, double& s2, double& angle) {
+  const double c = 0.5 * (s.xx + s.yy), r = std::hypot(0.5 * (s.xx - s.yy), s.xy);
+  s1 = c - r, s2 = c + r;
+  // Direction of s1 (the smaller, most compressive).
+  angle = 0.5 * std::atan2(-2.0 * s.xy, -(s.xx - s.yy));
+}
+
+const ZoneModel* find_zone_model(const std::string& name) {
+  for (const ZoneModel* m : kModels)
+    if (name == m->name()) return m;
+  return nullptr;
+}
+
+std::vector<std::string> zone_model_names() {
+  std::vector<std::string> names;
+  for (const ZoneModel* m : kModels) names.emplace_back(m->name());
+  return names;
+}
+
+void elastic_from_young(double young, double poisson, double& bulk, double& shear) {
+  if (!(young > 0)) throw std::invalid_argument("Young's modulus must be positive");
+  if (!(poisson > -1.0 && poisson < 0.5))
+    throw std::invalid_argument("Poisson's ratio must be between -1 and 0.5");
+  bulk = young / (3.0 * (1.0 - 2.0 * poisson));
+  shear = young / (2.0 * (1.0 + poisson));
+}
+
+void ZoneProperties::finalize() {
+  impl = find_zone_model(model);
+  if (!impl) throw std::invalid_argument("'" + model + "' is not a zone model");
+  if (!impl->solid()) return;
+  if (!(density > 0)) throw std::invalid_argument("zone material '" + name + "' needs a density");
+  if (!(bulk > 0 && shear > 0))
+    throw std::invalid_argument("zone material '" + name + "' needs elastic constants");
+  if (model == "mohr-coulomb" || model == "drucker-prager") {
+    if (!(friction >= 0 && friction < 90) || !(dilation >= 0 && dilation <= friction))
+      throw std::invalid_argument("zone material '" + name +
+                                  "': friction in [0, 90) and dilation in [0, friction] degrees");
+    if (cohesion < 0 || tension < 0)
+      throw std::invalid_argument("zone material '" + name +
+                                  "': cohesion and tension cannot be negative");
+  }
+}
+
+}  // namespace tessera

@@ -1,0 +1,195 @@
+// Zone constitutive models (elastic, Mohr-Coulomb, Drucker-Prager, null) and zoning of block
+// outlines: returns land on the yield surface, plastic flow follows the dilation angle, zones
+// tile the block exactly.
+#include <Eigen/Dense>
+#include <QtTest>
+#include <cmath>
+#include <numbers>
+
+#include "tessera/zone_model.hpp"
+#include "tessera/zoning.hpp"
+
+using namespace tessera;
+
+namespace {
+ZoneProperties material(const std::string& model, double phi = 30, double c = 1e6, double t = 0.5e6,
+                        double psi = 0) {
+  ZoneProperties p;
+  p.name = "rock";
+  p.model = model;
+  p.density = 2500;
+  elastic_from_young(10e9, 0.25, p.bulk, p.shear);
+  p.friction = phi, p.cohesion = c, p.tension = t, p.dilation = psi;
+  p.finalize();
+  return p;
+}
+
+// Principal stresses s1 <= s2 <= s3 of a plane-strain stress.
+std::array<double, 3> principal(const ZoneStress& s) {
+  double a, b, angle;
+  principal_2d(s, a, b, angle);
+  std::array<double, 3> v{a, b, s.zz};
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+double nphi(double deg) {
+  const double s = std::sin(deg * std::numbers::pi / 180);
+  return (1 + s) / (1 - s);
+}
+}  // namespace
+
+class TestZones : public QObject {
+  Q_OBJECT
+ private slots:
+  void elasticConstants() {
+    double k, g;
+    elastic_from_young(10e9, 0.25, k, g);
+    QVERIFY(std::abs(k - 10e9 / 1.5) < 1.0 && std::abs(g - 4e9) < 1.0);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, elastic_from_young(1e9, 0.5, k, g));
+    ZoneProperties p;
+    p.model = "mohr-colomb";
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, p.finalize());
+  }
+
+  // Constrained (plane strain, one-dimensional) loading: sxx = M exx, syy = szz = lambda exx.
+  void elasticUniaxialStrain() {
+    const ZoneProperties p = material("elastic");
+    ZoneStress s;
+    uint8_t state = 0;
+    p.impl->update(p, {-1e-4, 0, 0}, s, state);
+    const double m = p.bulk + 4 * p.shear / 3, l = p.bulk - 2 * p.shear / 3;
+    QVERIFY(std::abs(s.xx + m * 1e-4) < 1e-6 * m * 1e-4);
+    QVERIFY(std::abs(s.yy + l * 1e-4) < 1e-6 * m * 1e-4);
+    QCOMPARE(s.zz, s.yy);
+    QCOMPARE(state, uint8_t(0));
+  }
+
+  // Compressing in y from an isotropic stress: once yielding, every step ends on the shear
+  // line s1 = s3 Nphi - 2c sqrt(Nphi), and the plastic strain ratio is -Npsi (flow rule).
+  void mohrCoulombReturnsToTheSurface() {
+    for (double psi : {0.0, 10.0}) {
+      const ZoneProperties p = material("mohr-coulomb", 30, 1e6, 0.5e6, psi);
+      ZoneStress s{-2e6, -2e6, 0, -2e6};
+      uint8_t state = 0;
+      bool yielded = false;
+      for (int i = 0; i < 200; ++i) {
+        const StrainIncrement de{0.2e-5, -1e-5, 0.1e-5};
+        ZoneStress trial = s;
+        uint8_t ignored = 0;
+        material("elastic").impl->update(p, de, trial, ignored);
+        p.impl->update(p, de, s, state);
+        const auto v = principal(s);
+        const double fs = v[0] - v[2] * nphi(30) + 2 * 1e6 * std::sqrt(nphi(30));
+        QVERIFY2(fs > -1e-6 * 1e6, qPrintable(QString("fs = %1").arg(fs)));  // never outside
+        if (!(state & kShearNow)) continue;
+        yielded = true;
+        QVERIFY(std::abs(fs) < 1e-6 * 1e6);
+        // Plastic strain from the correction (trial - returned), in principal axes of the trial.
+        const auto t = principal(trial);
+        const double a1 = p.bulk + 4 * p.shear / 3, a2 = p.bulk - 2 * p.shear / 3;
+        Eigen::Matrix3d d;
+        d << a1, a2, a2, a2, a1, a2, a2, a2, a1;
+        const Eigen::Vector3d ep =
+            d.inverse() * Eigen::Vector3d(t[0] - v[0], t[1] - v[1], t[2] - v[2]);
+        QVERIFY(std::abs(ep[1]) < 1e-9 * std::abs(ep[0]));
+        QVERIFY(std::abs(ep[2] / ep[0] + nphi(psi)) < 1e-6);
+      }
+      QVERIFY(yielded && (state & kShearPast));
+    }
+  }
+
+  // Stretching: the largest principal stress is held at the tensile strength.
+  void mohrCoulombTensionCutOff() {
+    const ZoneProperties p = material("mohr-coulomb", 30, 1e6, 0.5e6);
+    ZoneStress s;
+    uint8_t state = 0;
+    for (int i = 0; i < 50; ++i) p.impl->update(p, {1e-5, 0, 0}, s, state);
+    QVERIFY(std::abs(principal(s)[2] - 0.5e6) < 1.0);
+    QVERIFY(state & kTensionNow);
+    // Unloading is elastic again: "now" clears, "past" stays.
+    p.impl->update(p, {-1e-6, 0, 0}, s, state);
+    QVERIFY(!(state & kTensionNow) && (state & kTensionPast));
+  }
+
+  void druckerPragerReturnsToTheSurface() {
+    const ZoneProperties p = material("drucker-prager", 30, 1e6, 0.5e6);
+    const double tp = std::tan(30 * std::numbers::pi / 180), r = std::sqrt(9 + 12 * tp * tp);
+    ZoneStress s{-2e6, -2e6, 0, -2e6};
+    uint8_t state = 0;
+    for (int i = 0; i < 200; ++i) p.impl->update(p, {0.3e-5, -1e-5, 0}, s, state);
+    QVERIFY2(state & kShearNow, qPrintable(QString("state %1 stress %2 %3 %4 %5")
+                                               .arg(state)
+                                               .arg(s.xx)
+                                               .arg(s.yy)
+                                               .arg(s.xy)
+                                               .arg(s.zz)));
+    const double mean = (s.xx + s.yy + s.zz) / 3;
+    const double dx = s.xx - mean, dy = s.yy - mean, dz = s.zz - mean;
+    const double tau = std::sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + s.xy * s.xy);
+    QVERIFY(std::abs(tau + tp / r * mean - 3 * 1e6 / r) < 1e-6 * 1e6);
+  }
+
+  // Stretched equally in x and y, Drucker-Prager holds the mean stress at the tensile strength.
+  void druckerPragerTensionCutOff() {
+    const ZoneProperties p = material("drucker-prager", 30, 1e6, 0.5e6);
+    ZoneStress s;
+    uint8_t state = 0;
+    for (int i = 0; i < 50; ++i) p.impl->update(p, {1e-5, 1e-5, 0}, s, state);
+    QVERIFY(std::abs((s.xx + s.yy + s.zz) / 3 - 0.5e6) < 1.0);
+    QVERIFY(state & kTensionNow);
+  }
+
+  void nullZonesCarryNothing() {
+    ZoneProperties p;
+    p.model = "null";
+    p.finalize();
+    ZoneStress s{1, 2, 3, 4};
+    uint8_t state = kShearPast;
+    p.impl->update(p, {1, 1, 1}, s, state);
+    QVERIFY(s.xx == 0 && s.yy == 0 && s.xy == 0 && s.zz == 0 && !p.impl->solid());
+  }
+
+  // Zones tile the outline: areas add up, sizes and angles as asked, corners kept, the same
+  // mesh every time.
+  void zoningTilesTheBlock() {
+    const std::vector<Vec2> l_shape{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}};
+    const ZoneMesh m = zone_polygon(l_shape, 0.2);
+    double area = 0;
+    for (const auto& t : m.triangles) {
+      const double a = 0.5 * cross(m.nodes[t[1]] - m.nodes[t[0]], m.nodes[t[2]] - m.nodes[t[0]]);
+      QVERIFY(a > 0);
+      area += a;
+      // No zone outside the L (the notch at x > 1, y > 1).
+      const Vec2 c = (m.nodes[t[0]] + m.nodes[t[1]] + m.nodes[t[2]]) / 3.0;
+      QVERIFY(!(c.x() > 1 && c.y() > 1));
+    }
+    QVERIFY(std::abs(area - 4.0) < 1e-12);
+    QVERIFY(m.max_edge <= 0.2 + 1e-9);
+    QVERIFY2(m.min_angle >= 20.0, qPrintable(QString::number(m.min_angle)));
+    for (const Vec2& corner : l_shape) {
+      const auto it = std::find_if(m.nodes.begin(), m.nodes.end(),
+                                   [&](const Vec2& n) { return (n - corner).norm() < 1e-12; });
+      QVERIFY(it != m.nodes.end() && m.on_boundary[size_t(it - m.nodes.begin())]);
+    }
+    size_t boundary = 0;
+    for (size_t i = 0; i < m.nodes.size(); ++i) {
+      const Vec2& n = m.nodes[i];
+      const bool on = std::abs(n.x()) < 1e-9 || std::abs(n.y()) < 1e-9 ||
+                      std::abs(n.x() - 3) < 1e-9 || std::abs(n.y() - 2) < 1e-9 ||
+                      (std::abs(n.x() - 1) < 1e-9 && n.y() >= 1) ||
+                      (std::abs(n.y() - 1) < 1e-9 && n.x() >= 1);
+      QCOMPARE(bool(m.on_boundary[i]), on);
+      boundary += on;
+    }
+    QVERIFY(boundary >= 50);  // perimeter 10 in edges of at most 0.2
+    const ZoneMesh again = zone_polygon(l_shape, 0.2);
+    QVERIFY(again.nodes == m.nodes && again.triangles == m.triangles);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polygon(l_shape, 1e-5, 100000));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             zone_polygon({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 0.1));  // clockwise
+  }
+};
+
+QTEST_APPLESS_MAIN(TestZones)
+#include "test_zones.moc"
