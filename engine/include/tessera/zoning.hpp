@@ -17,11 +17,20 @@ struct ZoneMesh {
   double max_edge = 0.0;                           // longest zone edge
 };
 
+// Finer zones near a point: edge `fine_edge` within `radius` of `centre`, growing by `growth`
+// per metre beyond it, up to the mesh's largest size.
+struct ZoneGrading {
+  Vec2 centre = Vec2::Zero();
+  double radius = 0.0, fine_edge = 0.0, growth = 0.25;
+  double size_at(const Vec2& p, double max_edge) const;
+};
+
 // Triangulates a simple polygon (counter-clockwise, convex or not) with CGAL's constrained
 // Delaunay refinement: zone edges no longer than `max_edge`, angles of about 20 degrees or more
 // where the outline allows. Every polygon vertex is a node. Throws std::invalid_argument for a
 // degenerate outline or a size that would make more than `max_zones` zones.
-ZoneMesh zone_polygon(const std::vector<Vec2>& polygon, double max_edge,
-                      size_t max_zones = 2000000);
+// With a grading, zones are finer near its centre.
+ZoneMesh zone_polygon(const std::vector<Vec2>& polygon, double max_edge, size_t max_zones = 2000000,
+                      const ZoneGrading* grading = nullptr);
 
 }  // namespace tessera

@@ -1,0 +1,84 @@
+// The mechanics of zoned (deformable) material: nodes carrying the motion, uniform-strain
+// triangles carrying the stress (§5.2.1, §5.2.3), stepped with central differences.
+//
+// This is the deformable-block kernel on its own: nodes, zones, boundary conditions, in-situ
+// stress, damping and the time step, verified against closed-form solutions (Kirsch's hole, an
+// elastic column, a P-wave, a Mohr-Coulomb plastic zone). Deformable blocks in the model and
+// their contacts with other blocks are built on it (see docs/ARCHITECTURE.md).
+//
+// Layout: structure of arrays. Nodes: position, initial position, velocity, force, lumped mass,
+// fixity; zones: three node indices (counter-clockwise), stress (tension positive), plastic
+// state and material. A node's mass is the density times the area of its median-dual cell (a
+// third of each zone around it), the barycentric counterpart of the chapter's Voronoi cell.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "tessera/geometry.hpp"
+#include "tessera/zone_model.hpp"
+#include "tessera/zoning.hpp"
+
+namespace tessera {
+
+struct Continuum {
+  // Nodes.
+  std::vector<Vec2> pos, pos0, vel, force, applied;  // applied: constant loads (tractions)
+  std::vector<double> mass;
+  std::vector<uint8_t> fixity;  // kFixX | kFixY of blocks.hpp
+  std::vector<Vec2> fixed_vel;
+  // Zones.
+  std::vector<std::array<uint32_t, 3>> zones;
+  std::vector<ZoneStress> stress;
+  std::vector<uint8_t> state;
+  std::vector<uint32_t> material;
+  std::vector<ZoneProperties> materials;
+  // Loading and stepping.
+  Vec2 gravity = Vec2::Zero();
+  double local_damping = 0.8;  // UDEC's local damping; 0 for dynamic runs
+  double dt = 0.0, time = 0.0;
+  uint64_t cycle = 0;
+  double ratio = 1.0;  // largest unbalanced force over the mean applied force
+
+  size_t node_count() const { return pos.size(); }
+  size_t zone_count() const { return zones.size(); }
+};
+
+// Appends a zone mesh as free nodes and zones of one material; returns the first new node.
+uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material);
+// Lumped nodal masses from the zones' densities and areas (after meshes and material changes).
+void lump_masses(Continuum& c);
+// Stable time step times `safety`: the smallest zone height over the P-wave speed.
+double critical_timestep(const Continuum& c, double safety = 0.5);
+// Stress in every zone: uniform `s0`, plus `gradient` times (y - y0) (e.g. for gravity).
+void initialize_stress(Continuum& c, const ZoneStress& s0, const ZoneStress& gradient = {},
+                       double y0 = 0.0);
+// Loads from a boundary stress (tension positive) on the outline edges whose two nodes pass
+// `on_edge`: each edge's traction sigma . n times its length, half to each node.
+template <typename Pred>
+void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_node,
+                           const ZoneStress& s, Pred on_edge);
+// Area of a zone in its current shape.
+double zone_area(const Continuum& c, size_t z);
+// One cycle: zone stresses from the strain increments, nodal forces, damping, motion.
+void continuum_cycle(Continuum& c);
+
+// Boundary edges of a mesh (node pairs with the domain on their left), in mesh node numbers.
+std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh);
+
+template <typename Pred>
+void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_node,
+                           const ZoneStress& s, Pred on_edge) {
+  for (const auto& e : boundary_edges(mesh)) {
+    const uint32_t a = first_node + e[0], b = first_node + e[1];
+    if (!on_edge(c.pos[a], c.pos[b])) continue;
+    // Outward normal times length: the edge turned clockwise (domain on the left).
+    const Vec2 d = c.pos[b] - c.pos[a];
+    const Vec2 nl(d.y(), -d.x());
+    const Vec2 t(s.xx * nl.x() + s.xy * nl.y(), s.xy * nl.x() + s.yy * nl.y());
+    c.applied[a] += 0.5 * t, c.applied[b] += 0.5 * t;
+  }
+}
+
+}  // namespace tessera

@@ -1,0 +1,150 @@
+// Uniform-strain triangles and nodal central differences.
+#include "tessera/continuum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "tessera/blocks.hpp"
+
+namespace tessera {
+
+uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
+  const auto first = static_cast<uint32_t>(c.pos.size());
+  for (const Vec2& p : mesh.nodes) {
+    c.pos.push_back(p), c.pos0.push_back(p);
+    c.vel.emplace_back(0, 0), c.force.emplace_back(0, 0), c.applied.emplace_back(0, 0);
+    c.mass.push_back(0), c.fixity.push_back(0), c.fixed_vel.emplace_back(0, 0);
+  }
+  for (const auto& t : mesh.triangles) {
+    c.zones.push_back({first + t[0], first + t[1], first + t[2]});
+    c.stress.emplace_back(), c.state.push_back(0), c.material.push_back(material);
+  }
+  return first;
+}
+
+double zone_area(const Continuum& c, size_t z) {
+  const auto& t = c.zones[z];
+  return 0.5 * cross(c.pos[t[1]] - c.pos[t[0]], c.pos[t[2]] - c.pos[t[0]]);
+}
+
+void lump_masses(Continuum& c) {
+  std::fill(c.mass.begin(), c.mass.end(), 0.0);
+  for (size_t z = 0; z < c.zones.size(); ++z) {
+    const ZoneProperties& p = c.materials[c.material[z]];
+    if (!p.impl->solid()) continue;
+    const double m = p.density * zone_area(c, z) / 3.0;
+    for (uint32_t n : c.zones[z]) c.mass[n] += m;
+  }
+}
+
+double critical_timestep(const Continuum& c, double safety) {
+  double dt = 1e300;
+  for (size_t z = 0; z < c.zones.size(); ++z) {
+    const ZoneProperties& p = c.materials[c.material[z]];
+    if (!p.impl->solid()) continue;
+    const auto& t = c.zones[z];
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, (c.pos[t[(k + 1) % 3]] - c.pos[t[k]]).norm());
+    const double height = 2.0 * zone_area(c, z) / longest;
+    const double cp = std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.density);
+    dt = std::min(dt, height / cp);
+  }
+  return safety * dt;
+}
+
+void initialize_stress(Continuum& c, const ZoneStress& s0, const ZoneStress& g, double y0) {
+  for (size_t z = 0; z < c.zones.size(); ++z) {
+    if (!c.materials[c.material[z]].impl->solid()) continue;
+    const auto& t = c.zones[z];
+    const double dy = (c.pos[t[0]].y() + c.pos[t[1]].y() + c.pos[t[2]].y()) / 3.0 - y0;
+    c.stress[z] = {s0.xx + g.xx * dy, s0.yy + g.yy * dy, s0.xy + g.xy * dy, s0.zz + g.zz * dy};
+  }
+}
+
+std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh) {
+  // An edge used by one triangle only is on the outline; it runs with the domain on its left.
+  std::map<std::pair<uint32_t, uint32_t>, int> count;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = t[k], b = t[(k + 1) % 3];
+      ++count[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::array<uint32_t, 2>> out;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = t[k], b = t[(k + 1) % 3];
+      if (count[{std::min(a, b), std::max(a, b)}] == 1) out.push_back({a, b});
+    }
+  return out;
+}
+
+void continuum_cycle(Continuum& c) {
+  const size_t nn = c.pos.size();
+  // scale: the size of the forces meeting at a node, for the unbalanced-force ratio.
+  thread_local std::vector<double> scale;
+  scale.assign(nn, 0.0);
+  for (size_t n = 0; n < nn; ++n) {
+    c.force[n] = c.applied[n] + c.mass[n] * c.gravity;
+    scale[n] = c.applied[n].norm() + c.mass[n] * c.gravity.norm();
+  }
+  // Zones: strain increment from the nodal velocities (uniform gradient of the linear field),
+  // the constitutive update, then the stress as nodal forces f_i = -A sigma grad N_i.
+  for (size_t z = 0; z < c.zones.size(); ++z) {
+    const ZoneProperties& p = c.materials[c.material[z]];
+    if (!p.impl->solid()) continue;
+    const auto& t = c.zones[z];
+    const double a2 = 2.0 * zone_area(c, z);
+    std::array<Vec2, 3> grad;  // grad N_i times 2A
+    for (int k = 0; k < 3; ++k) {
+      const Vec2& pj = c.pos[t[(k + 1) % 3]];
+      const Vec2& pk = c.pos[t[(k + 2) % 3]];
+      grad[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
+    }
+    double dvx_dx = 0, dvx_dy = 0, dvy_dx = 0, dvy_dy = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec2& v = c.vel[t[k]];
+      dvx_dx += v.x() * grad[k].x(), dvx_dy += v.x() * grad[k].y();
+      dvy_dx += v.y() * grad[k].x(), dvy_dy += v.y() * grad[k].y();
+    }
+    const double f = c.dt / a2;
+    const StrainIncrement de{dvx_dx * f, dvy_dy * f, 0.5 * (dvx_dy + dvy_dx) * f};
+    p.impl->update(p, de, c.stress[z], c.state[z]);
+    const ZoneStress& s = c.stress[z];
+    for (int k = 0; k < 3; ++k) {
+      const Vec2& g = grad[k];
+      const Vec2 fz = 0.5 * Vec2(s.xx * g.x() + s.xy * g.y(), s.xy * g.x() + s.yy * g.y());
+      c.force[t[k]] -= fz;
+      scale[t[k]] += fz.norm();
+    }
+  }
+  // Motion: local damping against the unbalanced force, fixed components held.
+  double max_unbalanced = 0, sum_applied = 0;
+  size_t free_nodes = 0;
+  for (size_t n = 0; n < nn; ++n) {
+    if (c.mass[n] <= 0) continue;
+    Vec2 f = c.force[n];
+    for (int k = 0; k < 2; ++k) {
+      const uint8_t bit = k == 0 ? kFixX : kFixY;
+      if (c.fixity[n] & bit) {
+        c.vel[n][k] = c.fixed_vel[n][k];
+        continue;
+      }
+      max_unbalanced = std::max(max_unbalanced, std::abs(f[k]));
+      const double v = c.vel[n][k];
+      f[k] -= c.local_damping * std::abs(f[k]) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
+      c.vel[n][k] = v + c.dt * f[k] / c.mass[n];
+    }
+    sum_applied += scale[n];
+    ++free_nodes;
+    c.pos[n] += c.dt * c.vel[n];
+  }
+  c.ratio = free_nodes && sum_applied > 0
+                ? max_unbalanced / (sum_applied / static_cast<double>(free_nodes))
+                : 0.0;
+  c.time += c.dt;
+  ++c.cycle;
+}
+
+}  // namespace tessera
