@@ -210,6 +210,40 @@ class TestGui : public QObject {
     QVERIFY(bytes.startsWith("%PDF-") && bytes.contains("%%EOF") && bytes.size() > 1000);
   }
 
+  // The session saved as a script reruns in batch to the same model.
+  void savedScriptRerunsTheSession() {
+    MainWindow w;
+    w.show();
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    w.runCommand("step 120");
+    QVERIFY(wait_finished(w));
+    w.runCommand("blok 1");  // fails: not part of the session
+    QVERIFY(!wait_finished(w));
+    w.runCommand("fix block=3");
+    QVERIFY(wait_finished(w));
+    w.step(80);
+    QVERIFY(wait_finished(w));
+    const QString saved = dir_.filePath("session.tess");
+    QVERIFY(w.saveScript(saved));
+    QFile f(saved);
+    QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QString text = QString::fromUtf8(f.readAll());
+    QVERIFY(text.startsWith("title \"Two blocks\"") &&
+            text.endsWith("step 120\nfix block=3\nstep 80\n"));
+    QVERIFY(!text.contains("blok"));
+    // Rerun in the window from the saved script: the same blocks at the same cycle.
+    const auto before = w.snapshot();
+    MainWindow again;
+    again.openScript(saved);
+    QVERIFY(wait_finished(again));
+    QCOMPARE(again.snapshot()->cycle, before->cycle);
+    for (size_t b = 0; b < before->blocks.size(); ++b) {
+      QCOMPARE(again.snapshot()->blocks[b].x, before->blocks[b].x);
+      QCOMPARE(again.snapshot()->blocks[b].y, before->blocks[b].y);
+    }
+  }
+
   // A bad command and a diverging run: an error in the console and a message, the model as
   // it was before the command.
   void badCommandLeavesModel() {

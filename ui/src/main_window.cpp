@@ -81,6 +81,7 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+  if (!keepWork()) return e->ignore();
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());
@@ -205,7 +206,9 @@ void MainWindow::openScript(const QString& path) {
     console_->append(path + ": cannot open the script file", true);
     return;
   }
+  if (!keepWork()) return;
   if (busy()) worker_->stop();
+  dirty_ = false;
   script_path_ = info.absoluteFilePath();
   QFile f(script_path_);
   journal_.clear();
@@ -263,7 +266,16 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   running_.clear();
   progress_->hide();
   setBusy(false);
-  if (ok && !what.startsWith('<')) journal_.append(what);
+  if (ok && !what.startsWith('<')) journal_.append(what), dirty_ = true;
+  // A script that failed part way: the lines after the failing one did not run; they stay in
+  // the journal as comments, so saving keeps them without pretending they ran.
+  if (!ok && what == "<open>") {
+    const QString prefix = script_path_ + ":";
+    const int line =
+        error.startsWith(prefix) ? error.mid(prefix.size()).section(':', 0, 0).toInt() : 0;
+    for (int i = std::max(line - 1, 0); line > 0 && i < journal_.size(); ++i)
+      journal_[i] = "; not run: " + journal_[i];
+  }
   frame();
   if (!ok) {
     statusBar()->showMessage("error: the model is as it was before the failing command");
@@ -364,19 +376,35 @@ void MainWindow::exportDialog() {
   }
 }
 
-void MainWindow::saveScriptAs() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, "Save script", script_path_, "Tessera scripts (*.tess)");
-  if (path.isEmpty()) return;
+bool MainWindow::saveScript(const QString& path) {
   QFile f(path);
-  if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) {
-    QMessageBox::warning(this, "Tessera", "cannot write " + path);
-    return;
-  }
+  if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return false;
   QTextStream out(&f);
   for (const QString& line : journal_) out << line << '\n';
+  out.flush();
+  if (f.error() != QFileDevice::NoError) return false;
+  dirty_ = false;
   console_->append("saved the script (" + QString::number(journal_.size()) + " lines) to " + path,
                    false);
+  return true;
+}
+
+bool MainWindow::saveScriptAs() {
+  const QString path =
+      QFileDialog::getSaveFileName(this, "Save script", script_path_, "Tessera scripts (*.tess)");
+  if (path.isEmpty()) return false;
+  if (saveScript(path)) return true;
+  QMessageBox::warning(this, "Tessera", "cannot write " + path);
+  return false;
+}
+
+bool MainWindow::keepWork() {
+  if (!dirty_) return true;
+  const auto answer = QMessageBox::question(
+      this, "Tessera", "Commands were run since the script was opened or saved. Save them?",
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Save) return saveScriptAs();
+  return answer == QMessageBox::Discard;
 }
 
 void MainWindow::saveStateAs() {

@@ -46,6 +46,9 @@ class MainWindow : public QMainWindow {
   // Writes the current view as a figure (.png, .svg or .pdf) of the given size.
   void exportFigure(const QString& path, int width, int height);
   void setViewOptions(const ViewOptions& o);
+  // Writes the opened script plus every command that ran since (a failed script's lines after
+  // the error commented out): rerun in batch, it rebuilds this model.
+  bool saveScript(const QString& path);
   const ViewOptions& viewOptions() const { return options_; }
 
   bool busy() const;
@@ -75,7 +78,9 @@ class MainWindow : public QMainWindow {
   void onStarted(const QString& what);
   void onFinished(bool ok, const QString& error);
   void updateRecent(const QString& added = {});
-  void saveScriptAs();
+  bool saveScriptAs();
+  // Asks to save commands run since the last save; false if the user cancels.
+  bool keepWork();
   void saveStateAs();
   void exportDialog();
   void setBusy(bool busy);
@@ -105,6 +110,7 @@ class MainWindow : public QMainWindow {
   uint64_t speed_cycle_ = 0, step_from_ = 0;
   qint64 speed_ms_ = 0;
   bool fit_next_ = true;
+  bool dirty_ = false;  // commands ran since the script was opened or saved
 };
 
 }  // namespace tessera::ui
