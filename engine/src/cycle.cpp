@@ -129,16 +129,17 @@ void update_interfaces(Model& m) {
       [&](size_t p0, size_t p1) {
         std::vector<std::pair<double, uint32_t>> along;
         std::vector<uint8_t> placed;
-        for (size_t p = p0; p < p1; ++p) {
-          const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
+        // Normals point towards the owner: compare them turned to point the same way.
+        const auto facing = [&](uint32_t q) {
+          return C.a[q] < C.b[q] ? C.normal[q] : Vec2(-C.normal[q]);
+        };
+        // Contacts of a pair split into joint lines by the way they face (a concave block can
+        // touch another along two faces); each line shares its length on its own.
+        const auto general_lines = [&](uint32_t c0, uint32_t c1) {
           placed.assign(c1 - c0, 0);
           for (uint32_t i = c0; i < c1; ++i) C.length[i] = 0.0;
           for (uint32_t i = c0; i < c1; ++i) {
             if (C.kind[i] == kLost || placed[i - c0]) continue;
-            // Normals point towards the owner: compare them turned to point the same way.
-            const auto facing = [&](uint32_t q) {
-              return C.a[q] < C.b[q] ? C.normal[q] : Vec2(-C.normal[q]);
-            };
             const Vec2 n0 = facing(i), t = perp(n0);
             along.clear();
             for (uint32_t q = i; q < c1; ++q)
@@ -147,6 +148,29 @@ void update_interfaces(Model& m) {
                 along.emplace_back(C.point[q].dot(t), q);
               }
             share_length(along, merge, C);
+          }
+        };
+        for (size_t p = p0; p < p1; ++p) {
+          const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
+          // Fast path (convex blocks, nearly every pair): all contacts face one way, so they
+          // form one joint line, the same list the general path below would build.
+          bool one_line = true;
+          Vec2 n_first = Vec2::Zero(), t_first = Vec2::Zero();
+          along.clear();
+          for (uint32_t i = c0; i < c1 && one_line; ++i) {
+            C.length[i] = 0.0;
+            if (C.kind[i] == kLost) continue;
+            const Vec2 f = facing(i);
+            if (along.empty())
+              n_first = f, t_first = perp(f);
+            else if (!(f.dot(n_first) > 0.8))
+              one_line = false;
+            along.emplace_back(C.point[i].dot(t_first), i);
+          }
+          if (one_line) {
+            if (!along.empty()) share_length(along, merge, C);
+          } else {
+            general_lines(c0, c1);
           }
           for (uint32_t i = c0; i < c1; ++i) {
             if (C.kind[i] == kLost) {
