@@ -19,7 +19,7 @@ Model wall_scene(int cols, int rows) {
   Model m;
   m.settings.rounding = 0.01;
   m.settings.gravity = Vec2(0, -9.81);
-  m.materials.push_back({"brick", 2600.0});
+  m.materials.push_back({"brick", 2600.0, {}});
   JointProperties j;
   j.name = "mortar", j.kn = 1e10, j.ks = 1e10, j.friction = std::atan(0.6) * 180 / M_PI;
   j.finalize();

@@ -50,6 +50,8 @@ uint64_t state_hash(const Model& m) {
   for (auto* v : {&B.x, &B.y, &B.theta, &B.vx, &B.vy, &B.omega}) mix_vec(h, *v);
   const Contacts& C = m.contacts;
   mix_vec(h, C.fn), mix_vec(h, C.fs), mix_vec(h, C.a), mix_vec(h, C.corner);
+  const Continuum& Z = m.continuum;
+  mix_vec(h, Z.pos), mix_vec(h, Z.vel), mix_vec(h, Z.stress), mix_vec(h, Z.state);
   mix(h, &m.time, sizeof m.time);
   return h;
 }

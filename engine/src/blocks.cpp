@@ -35,6 +35,7 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
     world_vertex.push_back(pts[i]);
     world_arc_centre.push_back(corners[i].centre);
     world_edge_dir.push_back(local_edge_dir.back());
+    node.push_back(-1);
   }
   vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
   all_convex.push_back(
@@ -48,6 +49,7 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
   inv_mass.push_back(0.0);
   inv_inertia.push_back(0.0);
   fixity.push_back(kFree);
+  deformable.push_back(0);
   group.push_back(group_id);
   material.push_back(material_id);
   id.push_back(id.empty() ? 1 : *std::max_element(id.begin(), id.end()) + 1);
@@ -71,6 +73,7 @@ void Blocks::refresh_inverse_mass(size_t b) {
 }
 
 void Blocks::update_world(size_t b) {
+  if (deformable[b]) return;
   const double c = std::cos(theta[b]), s = std::sin(theta[b]);
   const double bx = x[b], by = y[b];
   for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v) {
@@ -85,6 +88,31 @@ void Blocks::update_world(size_t b) {
 
 std::vector<Vec2> Blocks::world_polygon(size_t b) const {
   return {world_vertex.begin() + vert_begin[b], world_vertex.begin() + vert_begin[b + 1]};
+}
+
+void Blocks::set_outline(size_t b, const std::vector<Vec2>& pts, double rounding,
+                         const std::vector<int>& edge_tags, const std::vector<int32_t>& nodes) {
+  // The new vertex data, made as for a fresh block, spliced in place of the old.
+  Blocks fresh;
+  fresh.add(pts, rounding, 0.0, -1, -1, edge_tags);
+  fresh.node = nodes;
+  const Vec2 shift(fresh.x[0] - x[b], fresh.y[0] - y[b]);
+  for (Vec2& v : fresh.local_vertex) v += shift;
+  for (Vec2& v : fresh.local_arc_centre) v += shift;
+  const auto begin = static_cast<std::ptrdiff_t>(vert_begin[b]);
+  const auto end = static_cast<std::ptrdiff_t>(vert_begin[b + 1]);
+  each_vertex_array(fresh, [&](auto& mine, auto& theirs) {
+    mine.erase(mine.begin() + begin, mine.begin() + end);
+    mine.insert(mine.begin() + begin, theirs.begin(), theirs.end());
+  });
+  const auto grow = static_cast<int64_t>(pts.size()) - (end - begin);
+  for (size_t k = b + 1; k < vert_begin.size(); ++k)
+    vert_begin[k] = static_cast<uint32_t>(static_cast<int64_t>(vert_begin[k]) + grow);
+  all_convex[b] = fresh.all_convex[0];
+  perimeter[b] = fresh.perimeter[0];
+  bound_radius[b] = 0.0;
+  for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v)
+    bound_radius[b] = std::max(bound_radius[b], (world_vertex[v] - Vec2(x[b], y[b])).norm());
 }
 
 }  // namespace tessera
@@ -110,17 +138,11 @@ std::vector<int> Blocks::remove(const std::vector<uint8_t>& doomed) {
     map[b] = static_cast<int>(kept.x.size());
     for (size_t k = 0; k < src.size(); ++k) dst[k]->push_back((*src[k])[b]);
     kept.fixity.push_back(fixity[b]), kept.all_convex.push_back(all_convex[b]);
+    kept.deformable.push_back(deformable[b]);
     kept.group.push_back(group[b]), kept.material.push_back(material[b]), kept.id.push_back(id[b]);
-    for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v) {
-      kept.local_vertex.push_back(local_vertex[v]),
-          kept.local_arc_centre.push_back(local_arc_centre[v]);
-      kept.arc_radius.push_back(arc_radius[v]), kept.round_length.push_back(round_length[v]);
-      kept.convex.push_back(convex[v]), kept.local_edge_dir.push_back(local_edge_dir[v]);
-      kept.edge_length.push_back(edge_length[v]), kept.edge_tag.push_back(edge_tag[v]);
-      kept.world_vertex.push_back(world_vertex[v]),
-          kept.world_arc_centre.push_back(world_arc_centre[v]);
-      kept.world_edge_dir.push_back(world_edge_dir[v]);
-    }
+    each_vertex_array(kept, [&](auto& from, auto& to) {
+      to.insert(to.end(), from.begin() + vert_begin[b], from.begin() + vert_begin[b + 1]);
+    });
     kept.vert_begin.push_back(static_cast<uint32_t>(kept.local_vertex.size()));
   }
   *this = std::move(kept);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tessera/deformable.hpp"
 #include "tessera/expr.hpp"
 #include "tessera/generators.hpp"
 #include "tessera/parallel.hpp"
@@ -46,6 +47,9 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"delete", &Interpreter::cmd_delete},
       {"join", &Interpreter::cmd_join},
       {"check", &Interpreter::cmd_check},
+      {"zone", &Interpreter::cmd_zone},
+      {"boundary", &Interpreter::cmd_boundary},
+      {"insitu", &Interpreter::cmd_insitu},
   };
   return h;
 }
@@ -127,13 +131,44 @@ void Interpreter::cmd_material(Args& a) {
     double rho = 0.0;
     if (!take_num(a, "density", rho)) missing(a, "density", "material '" + name + "'");
     if (rho <= 0.0) fail("the density of material '" + name + "' must be positive");
+    // Zone constants for deformable blocks: E and nu, or K and G; a plasticity model.
+    ZoneProperties zone;
+    zone.name = name;
+    zone.density = rho;
+    double young = 0, poisson = 0;
+    const bool has_e = take_num(a, "E", young), has_nu = take_num(a, "nu", poisson);
+    const bool has_k = take_num(a, "K", zone.bulk), has_g = take_num(a, "G", zone.shear);
+    std::string model = "elastic";
+    take(a, "model", model);
+    take_num(a, "friction", zone.friction), take_num(a, "cohesion", zone.cohesion);
+    take_num(a, "tension", zone.tension), take_num(a, "dilation", zone.dilation);
     done(a);
+    if (has_e || has_nu || has_k || has_g) {
+      if ((has_e || has_nu) && (has_k || has_g)) fail("give E and nu, or K and G, not both pairs");
+      if (has_e != has_nu) fail("material '" + name + "' needs both E and nu");
+      if (has_k != has_g) fail("material '" + name + "' needs both K and G");
+      zone.model = model;
+      try {
+        if (has_e) elastic_from_young(young, poisson, zone.bulk, zone.shear);
+        zone.finalize();
+      } catch (const std::invalid_argument& e) {
+        fail("material '" + name + "': " + e.what() + suggest(model, zone_model_names()));
+      }
+    } else {
+      zone.model.clear();
+    }
     int k = model_.material_index(name);
     if (k < 0)
-      model_.materials.push_back({name, rho}), k = static_cast<int>(model_.materials.size()) - 1;
+      model_.materials.push_back({name, rho, zone}),
+          k = static_cast<int>(model_.materials.size()) - 1;
     model_.materials[static_cast<size_t>(k)].density = rho;
+    model_.materials[static_cast<size_t>(k)].zone = zone;
     for (size_t b = 0; b < model_.blocks.size(); ++b)
       if (model_.blocks.material[b] == k) model_.blocks.set_density(b, rho);
+    if (model_.continuum.zone_count() > 0) {
+      sync_zone_materials(model_);
+      lump_masses(model_.continuum);
+    }
     model_.touch();
   } else if (verb == "assign") {
     const int k = model_.material_index(name);

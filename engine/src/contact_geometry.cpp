@@ -66,8 +66,9 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
     if (f % 2 == 1) {
       if (!edge_feature(B, b, vk, c, r, max_depth, h, nullptr)) continue;
     } else {
-      // Rounded corner: valid inside the cone of its two edge normals.
-      if (!corners || !B.convex[vk]) continue;
+      // Rounded corner: valid inside the cone of its two edge normals. A straight node of a
+      // deformable block (no rounding) is met through the edges on either side of it.
+      if (!corners || !B.convex[vk] || B.arc_radius[vk] <= 0.0) continue;
       const uint32_t vp = v0 + static_cast<uint32_t>((f / 2 + n - 1) % n);
       const Vec2 dv = c - B.world_arc_centre[vk];
       const double d = dv.norm();

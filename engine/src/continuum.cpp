@@ -80,10 +80,18 @@ std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh) {
   return out;
 }
 
+namespace {
+// The size of the forces meeting at each node, for the unbalanced-force ratio.
+thread_local std::vector<double> scale;
+}  // namespace
+
 void continuum_cycle(Continuum& c) {
+  zone_forces(c);
+  move_nodes(c);
+}
+
+void zone_forces(Continuum& c) {
   const size_t nn = c.pos.size();
-  // scale: the size of the forces meeting at a node, for the unbalanced-force ratio.
-  thread_local std::vector<double> scale;
   scale.assign(nn, 0.0);
   for (size_t n = 0; n < nn; ++n) {
     c.force[n] = c.applied[n] + c.mass[n] * c.gravity;
@@ -119,7 +127,18 @@ void continuum_cycle(Continuum& c) {
       scale[t[k]] += fz.norm();
     }
   }
+}
+
+void add_node_force(Continuum& c, size_t n, const Vec2& f) {
+  c.force[n] += f;
+  scale[n] += f.norm();
+}
+
+double move_nodes(Continuum& c) {
+  const size_t nn = c.pos.size();
+  if (scale.size() != nn) scale.assign(nn, 0.0);
   // Motion: local damping against the unbalanced force, fixed components held.
+  double max_move = 0;
   double max_unbalanced = 0, sum_applied = 0;
   size_t free_nodes = 0;
   for (size_t n = 0; n < nn; ++n) {
@@ -139,12 +158,14 @@ void continuum_cycle(Continuum& c) {
     sum_applied += scale[n];
     ++free_nodes;
     c.pos[n] += c.dt * c.vel[n];
+    max_move = std::max(max_move, c.dt * c.vel[n].norm());
   }
   c.ratio = free_nodes && sum_applied > 0
                 ? max_unbalanced / (sum_applied / static_cast<double>(free_nodes))
                 : 0.0;
   c.time += c.dt;
   ++c.cycle;
+  return max_move;
 }
 
 }  // namespace tessera

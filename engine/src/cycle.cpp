@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "tessera/contact_geometry.hpp"
+#include "tessera/deformable.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/solver.hpp"
 
@@ -189,10 +190,12 @@ void update_interfaces(Model& m) {
             }
             // Shear displacement increment of a relative to b over the last step.
             const Vec2 n = C.normal[i], tn = perp(n);
-            const double dus =
-                (point_velocity(B, C.a[i], C.point[i]) - point_velocity(B, C.b[i], C.point[i]))
-                    .dot(tn) *
-                dt;
+            const bool soft = B.deformable[C.a[i]] || B.deformable[C.b[i]];
+            const Vec2 dv =
+                soft ? Vec2(contact_side_velocity(m, i, false) - contact_side_velocity(m, i, true))
+                     : Vec2(point_velocity(B, C.a[i], C.point[i]) -
+                            point_velocity(B, C.b[i], C.point[i]));
+            const double dus = dv.dot(tn) * dt;
             JointState s{C.fn[i],       C.fs[i],         C.un_prev[i],
                          C.dilation[i], C.shear_disp[i], C.flags[i]};
             const JointProperties& jp = m.joints[C.joint[i]];
@@ -318,6 +321,22 @@ void move_blocks(Model& m) {
   m.max_unbalanced = max_ub;
   m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
   m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
+  // Deformable blocks: the nodes' own cycle, with the contact forces added in between.
+  Continuum& zc = m.continuum;
+  if (zc.zone_count() > 0) {
+    zc.gravity = S.gravity;
+    zc.local_damping = alpha;
+    zc.dt = dt;
+    zone_forces(zc);
+    add_contact_forces_to_nodes(m);
+    move_nodes(zc);
+    update_deformable_world(m);
+    if (m.det_node.size() != zc.node_count()) m.det_node = zc.pos0;
+    for (size_t k = 0; k < zc.node_count(); ++k)
+      max_drift = std::max(max_drift, (zc.pos[k] - m.det_node[k]).norm());
+    m.ratio = free_blocks ? std::max(m.ratio, zc.ratio) : zc.ratio;
+    if (!std::isfinite(zc.ratio)) max_drift = zc.ratio;
+  }
   if (max_drift > 0.5 * tol) m.detection_due = true;
   if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(jump[worst] < 0.1))
     throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
@@ -353,7 +372,8 @@ double compute_timestep(const Model& m) {
       dt =
           std::min(dt, 2.0 * std::sqrt(B.inertia[b] / (k * B.bound_radius[b] * B.bound_radius[b])));
   }
-  if (!std::isfinite(dt)) return 1e-3;
+  dt = std::min(dt, deformable_timestep(m));
+  if (!std::isfinite(dt) || dt >= 1e299) return 1e-3;
   return m.settings.dt_safety * dt;
 }
 

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "tessera/contact_geometry.hpp"
+#include "tessera/deformable.hpp"
 #include "tessera/solver.hpp"
 
 namespace tessera {
@@ -137,9 +138,12 @@ void detect_contacts(Model& m) {
   const double tol = m.tolerance();
   const size_t n = B.size();
   for (size_t b = 0; b < n; ++b) B.update_world(b);
+  update_deformable_world(m);
   const std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
+  // Fixed blocks do not meet each other; a deformable block's nodes move although its rigid
+  // motion is held.
   std::vector<uint8_t> fixed(n);
-  for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll;
+  for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
   const auto pairs = broad_phase(boxes, fixed);
   // Narrow phase, pair by pair in sorted order.
   std::vector<Found> found;
@@ -211,6 +215,7 @@ void detect_contacts(Model& m) {
   m.contacts = std::move(next);
   build_adjacency(m);
   m.det_x = B.x, m.det_y = B.y, m.det_theta = B.theta;
+  m.det_node = m.continuum.pos;
   m.detection_due = false;
   ++m.detection_passes;
 }

@@ -1,5 +1,7 @@
 #include "tessera/generators.hpp"
 
+#include "tessera/deformable.hpp"
+
 namespace tessera {
 
 size_t add_running_bond_wall(Model& m, const WallSpec& w) {
@@ -186,6 +188,11 @@ size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<
   for (const auto& s : m.histories.series)
     if (s.block >= 0)
       throw ModelError("cut blocks before defining block histories (they would be renumbered)");
+  for (size_t b = 0; b < m.blocks.size(); ++b)
+    if ((chosen.empty() || std::find(chosen.begin(), chosen.end(), b) != chosen.end()) &&
+        m.blocks.deformable[b])
+      throw ModelError("block " + std::to_string(m.blocks.id[b]) +
+                       " is deformable: cut blocks before 'zone generate'");
   const Blocks old = m.blocks;
   std::vector<uint8_t> in(old.size(), chosen.empty() ? 1 : 0);
   for (size_t b : chosen) in[b] = 1;
@@ -213,6 +220,10 @@ void join_blocks(Model& m, const std::vector<size_t>& chosen) {
   for (const auto& s : m.histories.series)
     if (s.block >= 0)
       throw ModelError("join blocks before defining block histories (they would be renumbered)");
+  for (size_t b : chosen)
+    if (m.blocks.deformable[b])
+      throw ModelError("block " + std::to_string(m.blocks.id[b]) +
+                       " is deformable: join blocks before 'zone generate'");
   const Blocks old = m.blocks;
   std::vector<uint8_t> in(old.size(), 0);
   std::vector<TaggedPolygon> polys;
@@ -233,6 +244,7 @@ void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t b : blocks) doomed[b] = 1;
   const std::vector<uint32_t> old_begin = B.vert_begin;
+  drop_deformable(m, doomed);
   const std::vector<int> map = B.remove(doomed);
   // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
   Contacts& C = m.contacts;

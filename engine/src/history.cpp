@@ -65,6 +65,30 @@ double history_value(const Model& m, const HistorySeries& s) {
   // A block history whose block was deleted (-2) reads NaN from then on.
   if (s.block == -2) return std::nan("");
   const auto b = static_cast<size_t>(std::max(0, s.block));
+  // A node of a deformable block: its displacement, velocity and position.
+  if (s.node >= 0 && static_cast<size_t>(s.node) < m.continuum.node_count()) {
+    const Continuum& c = m.continuum;
+    const auto n = static_cast<size_t>(s.node);
+    switch (s.quantity) {
+      case HistoryQuantity::kXDisp:
+        return c.pos[n].x() - c.pos0[n].x();
+      case HistoryQuantity::kYDisp:
+        return c.pos[n].y() - c.pos0[n].y();
+      case HistoryQuantity::kXVel:
+        return c.vel[n].x();
+      case HistoryQuantity::kYVel:
+        return c.vel[n].y();
+      case HistoryQuantity::kXPos:
+        return c.pos[n].x();
+      case HistoryQuantity::kYPos:
+        return c.pos[n].y();
+      case HistoryQuantity::kRotation:
+      case HistoryQuantity::kAngVel:
+        return 0.0;
+      default:
+        break;
+    }
+  }
   switch (s.quantity) {
     case HistoryQuantity::kXDisp:
       return B.x[b] - B.x_ref[b];

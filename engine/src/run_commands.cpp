@@ -123,9 +123,21 @@ void Interpreter::cmd_history(Args& a) {
     a.words.clear();
     std::string label;
     const bool has_label = take(a, "label", label);
+    // For a deformable block, the node nearest the point (or the centroid).
+    Vec2 where(std::nan(""), std::nan(""));
+    for (const auto& kv : a.keys)
+      if (kv.first == "at") where = point(kv.second);
     const auto sel = select(a);
     if (sel.size() != 1) fail("a block history needs exactly one block (block=ID or at=X,Y)");
     s.block = static_cast<int32_t>(sel[0]);
+    if (model_.blocks.deformable[sel[0]]) {
+      if (std::isnan(where.x())) where = {model_.blocks.x[sel[0]], model_.blocks.y[sel[0]]};
+      const Continuum& c = model_.continuum;
+      double best = 1e300;
+      for (size_t n = 0; n < c.node_count(); ++n)
+        if (const double d = (c.pos[n] - where).norm(); d < best)
+          best = d, s.node = static_cast<int32_t>(n);
+    }
     s.label = has_label         ? label
               : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1)
                                 : s.label;

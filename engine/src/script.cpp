@@ -180,7 +180,7 @@ double Interpreter::num(const std::string& text) const {
     const auto id = static_cast<int64_t>(args[0]);
     if (id < 1 || id > static_cast<int64_t>(model_.blocks.size()))
       throw ExprError(f + "(" + std::to_string(id) + "): there is no block " + std::to_string(id));
-    v = history_value(model_, {q, static_cast<int32_t>(id - 1), ""});
+    v = history_value(model_, {q, static_cast<int32_t>(id - 1), -1, ""});
     return true;
   };
   try {

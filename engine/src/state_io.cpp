@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "tessera/deformable.hpp"
 #include "tessera/solver.hpp"
 
 namespace tessera {
@@ -14,7 +15,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 4;
+constexpr uint32_t kVersion = 5;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -99,6 +100,7 @@ void fields(IO& io, auto& m) {
   io.vec(B.convex), io.vec(B.local_edge_dir), io.vec(B.edge_length), io.vec(B.all_convex);
   io.vec(B.edge_tag);
   io.vec(B.group), io.vec(B.material), io.vec(B.id);
+  io.vec(B.node), io.vec(B.deformable);
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.slot), io.vec(C.kind), io.vec(C.feature),
       io.vec(C.flags);
@@ -109,7 +111,12 @@ void fields(IO& io, auto& m) {
   uint64_t count = m.materials.size();
   io.pod(count);
   m.materials.resize(count);
-  for (auto& mat : m.materials) io.str(mat.name), io.pod(mat.density);
+  for (auto& mat : m.materials) {
+    io.str(mat.name), io.pod(mat.density);
+    auto& z = mat.zone;
+    io.str(z.name), io.str(z.model), io.pod(z.density), io.pod(z.bulk), io.pod(z.shear);
+    io.pod(z.friction), io.pod(z.cohesion), io.pod(z.tension), io.pod(z.dilation);
+  }
   count = m.joints.size();
   io.pod(count);
   m.joints.resize(count);
@@ -131,12 +138,17 @@ void fields(IO& io, auto& m) {
   count = H.series.size();
   io.pod(count);
   H.series.resize(count);
-  for (auto& s : H.series) io.pod(s.quantity), io.pod(s.block), io.str(s.label);
+  for (auto& s : H.series) io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label);
   io.vec(H.cycles), io.vec(H.values);
   io.pod(m.cycle), io.pod(m.time), io.pod(m.dt), io.pod(m.dt_dirty), io.pod(m.global_c);
   io.pod(m.max_unbalanced), io.pod(m.mean_applied), io.pod(m.ratio);
   io.vec(m.det_x), io.vec(m.det_y), io.vec(m.det_theta), io.pod(m.detection_due);
   io.pod(m.detection_passes);
+  auto& Z = m.continuum;
+  io.vec(Z.pos), io.vec(Z.pos0), io.vec(Z.vel), io.vec(Z.force), io.vec(Z.applied);
+  io.vec(Z.mass), io.vec(Z.fixity), io.vec(Z.fixed_vel), io.vec(Z.zones), io.vec(Z.stress);
+  io.vec(Z.state), io.vec(Z.material), io.pod(Z.local_damping), io.pod(Z.dt), io.pod(Z.time);
+  io.pod(Z.cycle), io.pod(Z.ratio), io.vec(m.det_node);
 }
 
 }  // namespace
@@ -165,11 +177,16 @@ Model restore_state(const std::string& path) {
   Model m;
   fields(r, m);
   for (auto& j : m.joints) j.finalize();
+  for (auto& mat : m.materials)
+    if (!mat.zone.model.empty()) mat.zone.finalize();
+  sync_zone_materials(m);
+  m.continuum.gravity = m.settings.gravity;
   // World caches are a pure function of the saved positions.
   m.blocks.world_vertex.resize(m.blocks.local_vertex.size());
   m.blocks.world_arc_centre.resize(m.blocks.local_vertex.size());
   m.blocks.world_edge_dir.resize(m.blocks.local_vertex.size());
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
+  update_deformable_world(m);
   build_adjacency(m);
   return m;
 }

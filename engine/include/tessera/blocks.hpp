@@ -46,10 +46,15 @@ struct Blocks {
   std::vector<int> edge_tag;
   // Per vertex, world cache refreshed after integration: corner, arc centre, edge direction.
   std::vector<Vec2> world_vertex, world_arc_centre, world_edge_dir;
+  // Per vertex of a deformable block: the continuum node it is (-1 on rigid blocks).
+  std::vector<int32_t> node;
   // Per block geometry: area, perimeter, largest centroid-to-vertex distance, and whether every
   // corner is convex.
   std::vector<double> area, perimeter, bound_radius;
   std::vector<uint8_t> all_convex;
+  // Deformable blocks (zoned): their outline follows their boundary nodes; the rigid degrees of
+  // freedom stay fixed.
+  std::vector<uint8_t> deformable;
   // Cold data.
   std::vector<int> group, material;
   std::vector<int> id;  // the user's 1-based block number
@@ -64,8 +69,22 @@ struct Blocks {
   std::vector<int> remove(const std::vector<uint8_t>& doomed);
   // Mass properties from area and density (after a material change).
   void set_density(size_t b, double density);
-  // Recomputes the world vertex cache of one block from its position and rotation.
+  // Recomputes the world vertex cache of one block from its position and rotation (deformable
+  // blocks are refreshed from their nodes by update_deformable_world, model.hpp).
   void update_world(size_t b);
+  // Replaces the outline of block b (same centroid frame; used when a block is zoned).
+  void set_outline(size_t b, const std::vector<Vec2>& ccw_pts, double rounding,
+                   const std::vector<int>& edge_tags, const std::vector<int32_t>& nodes);
+  // Applies f(array of this, same array of other) to every per-vertex array.
+  template <class F>
+  void each_vertex_array(Blocks& other, F&& f) {
+    f(local_vertex, other.local_vertex), f(local_arc_centre, other.local_arc_centre);
+    f(arc_radius, other.arc_radius), f(round_length, other.round_length);
+    f(convex, other.convex), f(local_edge_dir, other.local_edge_dir);
+    f(edge_length, other.edge_length), f(edge_tag, other.edge_tag);
+    f(world_vertex, other.world_vertex), f(world_arc_centre, other.world_arc_centre);
+    f(world_edge_dir, other.world_edge_dir), f(node, other.node);
+  }
   // World vertices of a block as a polygon (for output and checks).
   std::vector<Vec2> world_polygon(size_t b) const;
   // Every per-block double array, in a fixed order (for copying and saving).

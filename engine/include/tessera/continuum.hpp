@@ -63,6 +63,12 @@ void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_no
 double zone_area(const Continuum& c, size_t z);
 // One cycle: zone stresses from the strain increments, nodal forces, damping, motion.
 void continuum_cycle(Continuum& c);
+// The two halves of a cycle, for models that add contact forces in between: nodal forces from
+// loads and zones, then damping and motion (sets the ratio; returns the largest node move).
+void zone_forces(Continuum& c);
+// Adds an outside force (a contact's) to a node between the two halves.
+void add_node_force(Continuum& c, size_t n, const Vec2& f);
+double move_nodes(Continuum& c);
 
 // Boundary edges of a mesh (node pairs with the domain on their left), in mesh node numbers.
 std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh);

@@ -29,6 +29,7 @@ enum class HistoryQuantity : uint8_t {
 struct HistorySeries {
   HistoryQuantity quantity = HistoryQuantity::kRatio;
   int32_t block = -1;  // block index for block quantities
+  int32_t node = -1;   // continuum node, when the block is deformable
   std::string label;   // CSV column heading
 };
 

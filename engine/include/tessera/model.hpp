@@ -10,6 +10,7 @@
 
 #include "tessera/blocks.hpp"
 #include "tessera/contacts.hpp"
+#include "tessera/continuum.hpp"
 #include "tessera/history.hpp"
 #include "tessera/joint_law.hpp"
 
@@ -18,6 +19,9 @@ namespace tessera {
 struct Material {
   std::string name;
   double density = 0.0;  // kg/m^3
+  // What zones of this material are (for deformable blocks); zone.model is empty if the
+  // material has no elastic constants.
+  ZoneProperties zone;
 };
 
 enum class DampingMode : uint8_t { kLocal = 0, kAdaptiveGlobal = 1, kNone = 2 };
@@ -51,6 +55,9 @@ struct Model {
   std::vector<std::string> groups;
   std::vector<std::string> joint_tags;  // names of joint sets, cracks and openings
   Histories histories;
+  // Nodes and zones of the deformable blocks. Zone material k + 1 is model material k; zone
+  // material 0 is null (excavated).
+  Continuum continuum;
 
   // Clock.
   uint64_t cycle = 0;
@@ -62,6 +69,7 @@ struct Model {
   double max_unbalanced = 0.0, mean_applied = 0.0, ratio = 1.0;
   // Block positions at the last detection pass (Verlet list), and whether one is due.
   std::vector<double> det_x, det_y, det_theta;
+  std::vector<Vec2> det_node;
   bool detection_due = true;
   uint64_t detection_passes = 0;
 

@@ -140,6 +140,10 @@ class Interpreter {
   void cmd_delete(Args&);
   void cmd_join(Args&);
   void cmd_check(Args&);
+  // Deformable blocks (zone_commands.cpp).
+  void cmd_zone(Args&);
+  void cmd_boundary(Args&);
+  void cmd_insitu(Args&);
   // Runs the geometry checks; errors fail unless the script said to go on.
   void run_checks(bool before_run);
   // A mean and optional standard deviation written as MEAN or MEAN,SD.

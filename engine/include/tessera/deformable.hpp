@@ -1,0 +1,30 @@
+// Deformable blocks in the model: zoning a block, its outline following its nodes, contact
+// forces reaching nodes, and removal (the link between Blocks and the Continuum kernel).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+// Zones block b (zone edges up to `max_edge`, optionally graded) and makes it deformable: its
+// outline becomes its boundary nodes in order. Throws std::invalid_argument if its material
+// has no elastic constants or the block is deformable already.
+void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading = nullptr);
+// Copies the model's materials into the continuum's zone materials (after a material change).
+void sync_zone_materials(Model& m);
+// Refreshes the world outline of every deformable block from its nodes.
+void update_deformable_world(Model& m);
+// Drops the nodes and zones of the doomed blocks (before Blocks::remove with the same flags).
+void drop_deformable(Model& m, const std::vector<uint8_t>& doomed);
+// Velocity of a contact's side: of block a's corner, or of the point on block b's feature.
+Vec2 contact_side_velocity(const Model& m, size_t contact, bool side_b);
+// Adds the contact forces on deformable blocks to their nodes (continuum.force), gathered in
+// a fixed order per block.
+void add_contact_forces_to_nodes(Model& m);
+// Time step limit of the deformable blocks: zones, and nodes against joint stiffness.
+double deformable_timestep(const Model& m);
+
+}  // namespace tessera

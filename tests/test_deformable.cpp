@@ -1,0 +1,84 @@
+// Deformable blocks in models built by script: a zoned column resting on a rigid base through
+// a joint, and a jointed block against the same block intact.
+#include <QtTest>
+#include <cmath>
+
+#include "support.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+// A square of rock, cut by `cuts` (script lines), zoned, loaded on its top and right sides by
+// boundary stresses and held by rollers on the left and bottom.
+std::string square(const std::string& cuts) {
+  return "round 0.01\n"
+         "material define rock density=2500 E=10e9 nu=0.25\n"
+         "joint define stiff kn=2e12 ks=2e12 friction=40 cohesion=1e12 tension=1e12\n"
+         "joint assign stiff\n"
+         "region 0,0 6,6 group=rock material=rock\n" +
+         cuts +
+         "zone generate edge=0.6\n"
+         "boundary fix=x x=-0.001,0.001\n"
+         "boundary fix=y y=-0.001,0.001\n"
+         "boundary stress=0,-10e6,0 y=5.999,6.001\n"
+         "boundary stress=-5e6,0,0 x=5.999,6.001\n"
+         "history xdisp at=5.99,5.99 label=ux\n"
+         "history ydisp at=5.99,5.99 label=uy\n"
+         "history ydisp at=3,5.99 label=uy_mid\n"
+         "solve ratio=1e-6 cycles=200000\n";
+}
+
+double last(const Model& m, const std::string& label) {
+  const Histories& h = m.histories;
+  return h.at(h.rows() - 1, static_cast<size_t>(h.find(label)));
+}
+}  // namespace
+
+class TestDeformable : public QObject {
+  Q_OBJECT
+ private slots:
+  // A 10 m elastic column on a rigid base: rho g H^2 / (2M) in the column plus the joint's
+  // closure rho g H / kn, within 1%.
+  void columnOnARigidBase() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define stone density=2500\n"
+        "material define rock density=2000 E=1e9 nu=0.25\n"
+        "joint define j kn=1e11 ks=1e11 friction=30\njoint assign j\n"
+        "block 0,0 1,0 1,1 0,1 group=base material=stone\nfix group=base\n"
+        "block 0,1 1,1 1,11 0,11 group=column material=rock\n"
+        "zone generate edge=0.25 group=column\n"
+        "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
+        "gravity 0 -10\nhistory ydisp at=0.5,10.999 label=top\n"
+        "history ydisp at=0.5,1.001 label=bottom\nsolve ratio=1e-7 cycles=200000");
+    const double k = 1e9 / (3 * (1 - 0.5)), g = 1e9 / 2.5, m = k + 4 * g / 3;
+    const double column = 2000 * 10 * 100 / (2 * m), joint = 2000 * 10 * 10 / 1e11;
+    const double top = -last(r.model(), "top"), bottom = -last(r.model(), "bottom");
+    qInfo("top settlement %.5e m (closed form %.5e), joint closure %.4e m (%.4e)", top,
+          column + joint, bottom, joint);
+    QVERIFY(std::abs(top / (column + joint) - 1) < 0.01);
+    QVERIFY(std::abs(bottom / joint - 1) < 0.05);
+  }
+
+  // Two joints through the square, very stiff and strong: the same displacements as intact.
+  void jointedSameAsIntact() {
+    ScriptRun intact, jointed;
+    intact.run(square(""));
+    jointed.run(square("crack 3,-1 3,7\ncrack -1,2.5 7,2.5\n"));
+    QCOMPARE(jointed.model().blocks.size(), size_t(4));
+    for (const char* label : {"ux", "uy", "uy_mid"}) {
+      const double a = last(intact.model(), label), b = last(jointed.model(), label);
+      qInfo("%s: intact %.6e m, jointed %.6e m", label, a, b);
+      QVERIFY(std::abs(b / a - 1) < 0.01);
+    }
+    // Plane strain, uniform stress: uy at the top = -(6 m) (syy - nu (1 + nu) ... ) checked
+    // against Hooke's law: eyy = ((1 - nu^2) syy - nu (1 + nu) sxx) / E.
+    const double nu = 0.25, e = 10e9, sxx = -5e6, syy = -10e6;
+    const double eyy = ((1 - nu * nu) * syy - nu * (1 + nu) * sxx) / e;
+    QVERIFY(std::abs(last(intact.model(), "uy") / (6 * eyy) - 1) < 0.01);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestDeformable)
+#include "test_deformable.moc"
