@@ -47,11 +47,22 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"delete", &Interpreter::cmd_delete},
       {"join", &Interpreter::cmd_join},
       {"check", &Interpreter::cmd_check},
+      {"reset", &Interpreter::cmd_reset},
       {"zone", &Interpreter::cmd_zone},
       {"boundary", &Interpreter::cmd_boundary},
       {"insitu", &Interpreter::cmd_insitu},
   };
   return h;
+}
+
+void Interpreter::cmd_reset(Args& a) {
+  if (a.words.size() != 1 || a.words[0] != "displacement") fail("write 'reset displacement'");
+  done(a);
+  // Displacements count from here: after the in-situ equilibrium, say.
+  Blocks& B = model_.blocks;
+  B.x_ref = B.x, B.y_ref = B.y;
+  model_.continuum.pos0 = model_.continuum.pos;
+  log("reset: displacements are zero from cycle " + std::to_string(model_.cycle));
 }
 
 void Interpreter::cmd_title(Args& a) {

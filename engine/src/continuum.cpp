@@ -23,6 +23,26 @@ uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
   return first;
 }
 
+void zone_strain(const Continuum& c, size_t z, double& exx, double& eyy, double& exy) {
+  const auto& t = c.zones[z];
+  const double a2 = cross(c.pos0[t[1]] - c.pos0[t[0]], c.pos0[t[2]] - c.pos0[t[0]]);
+  double ux_x = 0, ux_y = 0, uy_x = 0, uy_y = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& pj = c.pos0[t[(k + 1) % 3]];
+    const Vec2& pk = c.pos0[t[(k + 2) % 3]];
+    const Vec2 u = c.pos[t[k]] - c.pos0[t[k]];
+    const double bx = pj.y() - pk.y(), by = pk.x() - pj.x();
+    ux_x += u.x() * bx, ux_y += u.x() * by, uy_x += u.y() * bx, uy_y += u.y() * by;
+  }
+  exx = ux_x / a2, eyy = uy_y / a2, exy = 0.5 * (ux_y + uy_x) / a2;
+}
+
+void principal_stresses(const ZoneStress& s, double& s1, double& s3) {
+  double a = 0, b = 0, angle = 0;
+  principal_2d(s, a, b, angle);
+  s1 = std::min(a, s.zz), s3 = std::max(b, s.zz);
+}
+
 double zone_area(const Continuum& c, size_t z) {
   const auto& t = c.zones[z];
   return 0.5 * cross(c.pos[t[1]] - c.pos[t[0]], c.pos[t[2]] - c.pos[t[0]]);

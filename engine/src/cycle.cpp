@@ -173,6 +173,15 @@ void update_interfaces(Model& m) {
           } else {
             general_lines(c0, c1);
           }
+          // A node of a deformable block stands for its own stretch of outline at most: a
+          // light node alone against a long edge must not take the edge's stiffness.
+          if (B.deformable[C.a[c0]])
+            for (uint32_t i = c0; i < c1; ++i) {
+              const uint32_t v = C.corner[i], blk = C.a[i];
+              const uint32_t prev = v > B.vert_begin[blk] ? v - 1 : B.vert_begin[blk + 1] - 1;
+              const double own = 0.5 * (B.edge_length[v] + B.edge_length[prev]);
+              C.length[i] = std::min(C.length[i], std::max(own, C.chord[i]));
+            }
           for (uint32_t i = c0; i < c1; ++i) {
             if (C.kind[i] == kLost) {
               if (C.flags[i] & kBonded)

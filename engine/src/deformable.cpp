@@ -83,6 +83,10 @@ void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* gra
       B.convex[v] = 1, B.arc_radius[v] = 0.0, B.round_length[v] = 0.0;
       B.local_arc_centre[v] = B.local_vertex[v], B.world_arc_centre[v] = B.world_vertex[v];
     }
+  // Straight nodes are no notches: the block is as convex as its original outline.
+  B.all_convex[b] = 1;
+  for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+    if (!B.convex[v]) B.all_convex[b] = 0;
   // The rigid motion is replaced by the nodes' motion.
   B.fixity[b] = kFixAll;
   B.vx[b] = B.vy[b] = B.omega[b] = 0.0;

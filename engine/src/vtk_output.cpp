@@ -111,6 +111,59 @@ void write_contacts(const Model& m, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
+// Zones of the deformable blocks: nodes as points (with displacement and velocity), zones as
+// triangles with stresses (tension positive), principal stresses, strains and plastic state.
+void write_zones(const Model& m, const std::string& path) {
+  const Continuum& c = m.continuum;
+  const size_t nn = c.node_count(), nz = c.zone_count();
+  std::ofstream out = open_file(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n"
+      << "<PolyData>\n<Piece NumberOfPoints=\"" << nn << "\" NumberOfPolys=\"" << nz << "\">\n";
+  out << "<Points>\n";
+  array(out, "Float64", "Points", 3, nn, [&](size_t k) {
+    const Vec2& p = c.pos[k / 3];
+    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
+  });
+  out << "</Points>\n<Polys>\n";
+  array(out, "Int64", "connectivity", 1, 3 * nz, [&](size_t k) { return c.zones[k / 3][k % 3]; });
+  array(out, "Int64", "offsets", 1, nz, [](size_t z) { return 3 * (z + 1); });
+  out << "</Polys>\n<PointData Vectors=\"displacement\">\n";
+  array(out, "Float64", "displacement", 3, nn, [&](size_t k) {
+    const Vec2 u = c.pos[k / 3] - c.pos0[k / 3];
+    return k % 3 == 0 ? u.x() : k % 3 == 1 ? u.y() : 0.0;
+  });
+  array(out, "Float64", "velocity", 3, nn, [&](size_t k) {
+    const Vec2& v = c.vel[k / 3];
+    return k % 3 == 0 ? v.x() : k % 3 == 1 ? v.y() : 0.0;
+  });
+  out << "</PointData>\n<CellData Scalars=\"syy\">\n";
+  array(out, "Float64", "sxx", 1, nz, [&](size_t z) { return c.stress[z].xx; });
+  array(out, "Float64", "syy", 1, nz, [&](size_t z) { return c.stress[z].yy; });
+  array(out, "Float64", "sxy", 1, nz, [&](size_t z) { return c.stress[z].xy; });
+  array(out, "Float64", "szz", 1, nz, [&](size_t z) { return c.stress[z].zz; });
+  auto principal = [&](size_t z, bool major) {
+    double s1 = 0, s3 = 0;
+    principal_stresses(c.stress[z], s1, s3);
+    return major ? s1 : s3;
+  };
+  array(out, "Float64", "sigma1", 1, nz, [&](size_t z) { return principal(z, true); });
+  array(out, "Float64", "sigma3", 1, nz, [&](size_t z) { return principal(z, false); });
+  auto strain = [&](size_t z, int k) {
+    double e[3];
+    zone_strain(c, z, e[0], e[1], e[2]);
+    return e[k];
+  };
+  array(out, "Float64", "exx", 1, nz, [&](size_t z) { return strain(z, 0); });
+  array(out, "Float64", "eyy", 1, nz, [&](size_t z) { return strain(z, 1); });
+  array(out, "Float64", "exy", 1, nz, [&](size_t z) { return strain(z, 2); });
+  array(out, "Int32", "state", 1, nz, [&](size_t z) { return c.state[z]; });
+  array(out, "Int32", "material", 1, nz,
+        [&](size_t z) { return static_cast<int>(c.material[z]) - 1; });
+  out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
 }  // namespace
 
 int contact_state_code(uint8_t flags) {
@@ -131,17 +184,23 @@ void VtkSeries::write(const Model& m) {
   std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
   write_blocks(m, dir_ + "/blocks_" + name);
   write_contacts(m, dir_ + "/contacts_" + name);
+  // Zones from the first snapshot that has them; a collection lists only files that exist.
+  if (m.continuum.zone_count() > 0) {
+    if (zones_from_ < 0) zones_from_ = static_cast<int>(times_.size());
+    write_zones(m, dir_ + "/zones_" + name);
+  }
   times_.push_back(m.time);
   write_collection("blocks");
   write_collection("contacts");
+  if (zones_from_ >= 0) write_collection("zones", static_cast<size_t>(zones_from_));
 }
 
-void VtkSeries::write_collection(const std::string& name) const {
+void VtkSeries::write_collection(const std::string& name, size_t first) const {
   const std::string path = dir_ + "/" + name + ".pvd";
   std::ofstream out = open_file(path);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   char buf[160];
-  for (size_t f = 0; f < times_.size(); ++f) {
+  for (size_t f = first; f < times_.size(); ++f) {
     std::snprintf(buf, sizeof buf,
                   "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n", times_[f],
                   name.c_str(), f);

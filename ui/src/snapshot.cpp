@@ -128,13 +128,30 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     o.vx = B.vx[b], o.vy = B.vy[b], o.omega = B.omega[b];
     o.area = B.area[b], o.mass = B.mass[b], o.fixity = B.fixity[b];
     o.vert_begin = static_cast<uint32_t>(s.local.size());
+    o.deformable = B.deformable[b];
+    // A deformable block: outline nodes as they are and as they started; its displacement and
+    // velocity are the means over the outline.
+    Vec2 disp = Vec2::Zero(), vel = Vec2::Zero();
     for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
-      s.local.push_back(B.local_vertex[v]);
+      if (o.deformable) {
+        const auto n = static_cast<size_t>(B.node[v]);
+        s.local.push_back(m.continuum.pos[n]);
+        s.start.push_back(m.continuum.pos0[n]);
+        disp += m.continuum.pos[n] - m.continuum.pos0[n], vel += m.continuum.vel[n];
+      } else {
+        s.local.push_back(B.local_vertex[v]);
+        s.start.push_back(Vec2::Zero());
+      }
       const Vec2& w = B.world_vertex[v];
       s.lo = first ? w : s.lo.cwiseMin(w), s.hi = first ? w : s.hi.cwiseMax(w);
       first = false;
     }
     o.vert_end = static_cast<uint32_t>(s.local.size());
+    if (o.deformable && o.vert_end > o.vert_begin) {
+      const double k = 1.0 / static_cast<double>(o.vert_end - o.vert_begin);
+      o.x = o.x_ref + k * disp.x(), o.y = o.y_ref + k * disp.y();
+      o.vx = k * vel.x(), o.vy = k * vel.y(), o.theta = 0.0, o.omega = 0.0;
+    }
   }
   const Contacts& C = m.contacts;
   s.contacts.reserve(C.size());
@@ -162,6 +179,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
 }
 
 Vec2 shown_vertex(const Snapshot& s, const SnapshotBlock& b, uint32_t v, double magnify) {
+  if (b.deformable) return s.start[v] + magnify * (s.local[v] - s.start[v]);
   const double t = b.theta * magnify;
   const double c = std::cos(t), sn = std::sin(t);
   const Vec2& p = s.local[v];

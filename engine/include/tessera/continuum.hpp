@@ -59,6 +59,10 @@ void initialize_stress(Continuum& c, const ZoneStress& s0, const ZoneStress& gra
 template <typename Pred>
 void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_node,
                            const ZoneStress& s, Pred on_edge);
+// Small strain of a zone from its nodes' displacements on the initial shape.
+void zone_strain(const Continuum& c, size_t z, double& exx, double& eyy, double& exy);
+// Most and least compressive principal stresses of the three (tension positive: s1 <= s3).
+void principal_stresses(const ZoneStress& s, double& s1, double& s3);
 // Area of a zone in its current shape.
 double zone_area(const Continuum& c, size_t z);
 // One cycle: zone stresses from the strain increments, nodal forces, damping, motion.

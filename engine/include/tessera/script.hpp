@@ -144,6 +144,7 @@ class Interpreter {
   void cmd_zone(Args&);
   void cmd_boundary(Args&);
   void cmd_insitu(Args&);
+  void cmd_reset(Args&);
   // Runs the geometry checks; errors fail unless the script said to go on.
   void run_checks(bool before_run);
   // A mean and optional standard deviation written as MEAN or MEAN,SD.

@@ -12,8 +12,8 @@ namespace tessera {
 
 class VtkSeries {
  public:
-  // Files go to `dir` (created if missing): blocks.pvd, contacts.pvd and one .vtp of each per
-  // snapshot.
+  // Files go to `dir` (created if missing): blocks.pvd, contacts.pvd (and zones.pvd once there
+  // are deformable blocks) and one .vtp of each per snapshot.
   explicit VtkSeries(std::string dir);
   // Writes a snapshot of the model; throws std::runtime_error naming the file on failure.
   void write(const Model& m);
@@ -21,9 +21,10 @@ class VtkSeries {
   const std::string& dir() const { return dir_; }
 
  private:
-  void write_collection(const std::string& name) const;
+  void write_collection(const std::string& name, size_t first = 0) const;
   std::string dir_;
   std::vector<double> times_;
+  int zones_from_ = -1;  // first snapshot with zones
 };
 
 // Contact state code used in the output: 0 open, 1 elastic, 2 slipping, 3 bonded.

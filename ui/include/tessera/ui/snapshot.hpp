@@ -24,6 +24,7 @@ struct SnapshotBlock {
   double vx = 0, vy = 0, omega = 0;
   double area = 0, mass = 0;
   uint8_t fixity = 0;
+  bool deformable = false;  // then local holds outline node positions, start their originals
   uint32_t vert_begin = 0, vert_end = 0;  // into Snapshot::local
 };
 
@@ -51,6 +52,7 @@ struct Snapshot {
   double time = 0, dt = 0, ratio = 1;
   std::vector<SnapshotBlock> blocks;
   std::vector<Vec2> local;  // block vertices relative to the centroid, unrotated
+  std::vector<Vec2> start;  // deformable blocks: where each outline node started
   std::vector<SnapshotContact> contacts;
   std::vector<std::string> groups;
   std::vector<Entry> materials, joints, conditions, stages;
