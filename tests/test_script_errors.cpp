@@ -155,6 +155,33 @@ class TestScriptErrors : public QObject {
     QCOMPARE(got.view.title, std::string("Fig 1"));
     QVERIFY(QString::fromStdString(got.path).endsWith("out.svg"));
   }
+  // Deformable-block commands name what is missing or wrong.
+  void deformableInputIsChecked() {
+    const std::string blk = std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\n";
+    QVERIFY(has(error_of(blk + "zone generate edge=0.2"),
+                "test:5: block 1: its material has no elastic constants"));
+    QVERIFY(has(error_of(blk + "zone generate"), "zone generate needs edge="));
+    QVERIFY(has(error_of(blk + "boundary fix=x"), "there are no zones"));
+    QVERIFY(has(error_of(blk + "insitu stress=0,-1e6,0"), "there are no zones"));
+    QVERIFY(has(error_of(std::string(kBase) + "material define soft density=2000 E=1e9"),
+                "material 'soft' needs both E and nu"));
+    QVERIFY(has(error_of(std::string(kBase) + "material define soft density=2000 E=1e9 nu=0.6"),
+                "Poisson's ratio must be between -1 and 0.5"));
+    QVERIFY(has(error_of(std::string(kBase) +
+                         "material define soft density=2000 E=1e9 nu=0.2 model=mohr-colomb"),
+                "(did you mean 'mohr-coulomb'?)"));
+    const std::string soft = std::string(kBase) +
+                             "material define soft density=2000 E=1e9 nu=0.2\n"
+                             "block 0,0 1,0 1,1 0,1 material=soft\nzone generate edge=0.25\n";
+    QVERIFY(has(error_of(soft + "boundary fix=z"), "write fix=x, fix=y or fix=xy"));
+    QVERIFY(has(error_of(soft + "boundary fix=x x=5,6"), "no node lies in that box"));
+    QVERIFY(has(error_of(soft + "zone null x=5,6 y=5,6"), "no zone has its centre in that box"));
+    QVERIFY(has(error_of(soft + "crack -1,0.5 2,0.5"), "is deformable: cut blocks before"));
+    QVERIFY(has(error_of(std::string(kBase) + "material define soft density=2000 E=1e9 nu=0.2\n"
+                                              "block 0,0 1,0 1,1 0,1 material=soft\n"
+                                              "zone generate edge=1e-4"),
+                "test:6: block 1: zones of size"));
+  }
   // With rollback on, a failing command leaves the model as it was before it.
   void rollbackKeepsTheModel() {
     ScriptRun r;

@@ -87,6 +87,12 @@ ZoneMesh zone_polygon(const std::vector<Vec2>& polygon, double max_edge, size_t 
     throw std::invalid_argument("a zone grading needs a positive fine size and growth");
   const double area = polygon_area(polygon);
   if (!(area > 0)) throw std::invalid_argument("the block outline is not counter-clockwise");
+  // At least this many zones even where the mesh is coarsest: refuse at once if too many.
+  const double fewest = area / (max_edge * max_edge * std::sqrt(3.0) / 4.0);
+  if (fewest > static_cast<double>(max_zones))
+    throw std::invalid_argument("zones of size " + std::to_string(max_edge) +
+                                " would make more than " + std::to_string(max_zones) +
+                                " zones; use a larger size");
   CDT cdt;
   std::vector<CDT::Vertex_handle> corners;
   for (const Vec2& v : polygon) corners.push_back(cdt.insert(K::Point_2(v.x(), v.y())));
