@@ -338,8 +338,13 @@ void move_blocks(Model& m) {
     zc.dt = dt;
     zone_forces(zc);
     add_contact_forces_to_nodes(m);
-    move_nodes(zc);
+    const double node_move = move_nodes(zc);
     update_deformable_world(m);
+    // A node that moves half the contact tolerance in one step has left explicit dynamics.
+    if (!std::isfinite(node_move) || node_move > 0.5 * tol)
+      throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
+                       ": a node of a deformable block moved " + std::to_string(node_move) +
+                       " m in one step (time step too large, or blocks overlapping badly)");
     if (m.det_node.size() != zc.node_count()) m.det_node = zc.pos0;
     for (size_t k = 0; k < zc.node_count(); ++k)
       max_drift = std::max(max_drift, (zc.pos[k] - m.det_node[k]).norm());

@@ -119,11 +119,12 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
     const uint32_t lo = std::min(owner, other), hi = std::max(owner, other);
     out.push_back({lo, hi, owner, v, other, 0, hit});
     if (B.all_convex[other] || hit.kind != kCornerEdge) continue;
-    // In the notch of a concave block the corner also touches a second face.
+    // In the notch of a concave block the corner also touches a second face: one it is near,
+    // not a face of the block far behind the first.
     FeatureHit second, h;
     bool has_second = false;
     for (uint32_t e = B.vert_begin[other]; e < B.vert_begin[other + 1]; ++e)
-      if (edge_feature(B, other, e, c, r, depth, h, nullptr) && h.gap < reach &&
+      if (edge_feature(B, other, e, c, r, depth, h, nullptr) && std::abs(h.gap) < reach &&
           h.normal.dot(hit.normal) < 0.7 && (!has_second || std::abs(h.gap) < std::abs(second.gap)))
         second = h, has_second = true;
     if (!has_second) continue;

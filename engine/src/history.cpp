@@ -89,6 +89,35 @@ double history_value(const Model& m, const HistorySeries& s) {
         break;
     }
   }
+  // A deformable block as a whole: the mean over its outline nodes.
+  if (s.node < 0 && s.block >= 0 && B.deformable[b]) {
+    const Continuum& c = m.continuum;
+    Vec2 u = Vec2::Zero(), v = Vec2::Zero(), p = Vec2::Zero();
+    for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k) {
+      const auto n = static_cast<size_t>(B.node[k]);
+      u += c.pos[n] - c.pos0[n], v += c.vel[n], p += c.pos[n];
+    }
+    const double w = 1.0 / static_cast<double>(B.vertex_count(b));
+    switch (s.quantity) {
+      case HistoryQuantity::kXDisp:
+        return w * u.x();
+      case HistoryQuantity::kYDisp:
+        return w * u.y();
+      case HistoryQuantity::kXVel:
+        return w * v.x();
+      case HistoryQuantity::kYVel:
+        return w * v.y();
+      case HistoryQuantity::kXPos:
+        return w * p.x();
+      case HistoryQuantity::kYPos:
+        return w * p.y();
+      case HistoryQuantity::kRotation:
+      case HistoryQuantity::kAngVel:
+        return 0.0;
+      default:
+        break;
+    }
+  }
   switch (s.quantity) {
     case HistoryQuantity::kXDisp:
       return B.x[b] - B.x_ref[b];

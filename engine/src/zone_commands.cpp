@@ -105,9 +105,24 @@ void Interpreter::cmd_boundary(Args& a) {
     const Vec2 r = point(v);
     box.y0 = std::min(r.x(), r.y()), box.y1 = std::max(r.x(), r.y());
   }
-  std::string fix, vel, stress;
-  const bool has_fix = take(a, "fix", fix), has_vel = take(a, "velocity", vel),
-             has_stress = take(a, "stress", stress);
+  std::string fix, vel, stress, joints;
+  const bool has_fix = take(a, "fix", fix), has_vel = take(a, "velocity", vel);
+  bool has_stress = take(a, "stress", stress);
+  // A pressure P is the stress -P, -P, 0: on the wall of an opening it pushes into the rock.
+  double pressure = 0;
+  if (take_num(a, "pressure", pressure)) {
+    if (has_stress) fail("give stress= or pressure=, not both");
+    stress = std::to_string(-pressure) + "," + std::to_string(-pressure) + ",0";
+    has_stress = true;
+  }
+  // Only the outline edges along a named joint set, crack or opening.
+  int tag = -1;
+  if (take(a, "joints", joints)) {
+    for (size_t k = 0; k < model_.joint_tags.size(); ++k)
+      if (model_.joint_tags[k] == joints) tag = static_cast<int>(k);
+    if (tag < 0)
+      fail("there are no joints named '" + joints + "'" + suggest(joints, model_.joint_tags));
+  }
   const bool free = !a.words.empty() && a.words[0] == "free";
   if (free) a.words.erase(a.words.begin());
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
@@ -129,13 +144,17 @@ void Interpreter::cmd_boundary(Args& a) {
         const uint32_t next = k + 1 < B.vert_begin[b + 1] ? k + 1 : B.vert_begin[b];
         const auto n0 = static_cast<size_t>(B.node[k]), n1 = static_cast<size_t>(B.node[next]);
         if (!box.holds(c.pos[n0]) || !box.holds(c.pos[n1])) continue;
+        if (tag >= 0 && B.edge_tag[k] != tag) continue;
         const Vec2 d = c.pos[n1] - c.pos[n0];
         const Vec2 nl(d.y(), -d.x());  // outward normal times length (outline counter-clockwise)
         const Vec2 t(s.xx * nl.x() + s.xy * nl.y(), s.xy * nl.x() + s.yy * nl.y());
         c.applied[n0] += 0.5 * t, c.applied[n1] += 0.5 * t, ++count;
       }
     }
-    if (!count) fail("no outline edge of a deformable block lies in that box");
+    if (!count)
+      fail(tag >= 0
+               ? "no outline edge of a deformable block along '" + joints + "' lies in that box"
+               : std::string("no outline edge of a deformable block lies in that box"));
     log("boundary stress on " + std::to_string(count) + " edges");
     return;
   }
