@@ -65,39 +65,21 @@ double history_value(const Model& m, const HistorySeries& s) {
   // A block history whose block was deleted (-2) reads NaN from then on.
   if (s.block == -2) return std::nan("");
   const auto b = static_cast<size_t>(std::max(0, s.block));
-  // A node of a deformable block: its displacement, velocity and position.
-  if (s.node >= 0 && static_cast<size_t>(s.node) < m.continuum.node_count()) {
-    const Continuum& c = m.continuum;
-    const auto n = static_cast<size_t>(s.node);
-    switch (s.quantity) {
-      case HistoryQuantity::kXDisp:
-        return c.pos[n].x() - c.pos0[n].x();
-      case HistoryQuantity::kYDisp:
-        return c.pos[n].y() - c.pos0[n].y();
-      case HistoryQuantity::kXVel:
-        return c.vel[n].x();
-      case HistoryQuantity::kYVel:
-        return c.vel[n].y();
-      case HistoryQuantity::kXPos:
-        return c.pos[n].x();
-      case HistoryQuantity::kYPos:
-        return c.pos[n].y();
-      case HistoryQuantity::kRotation:
-      case HistoryQuantity::kAngVel:
-        return 0.0;
-      default:
-        break;
-    }
-  }
-  // A deformable block as a whole: the mean over its outline nodes.
-  if (s.node < 0 && s.block >= 0 && B.deformable[b]) {
+  // Deformable blocks: a node's displacement, velocity and position, or (for the block as a
+  // whole) their means over its outline nodes; no rotation.
+  const bool one_node = s.node >= 0 && static_cast<size_t>(s.node) < m.continuum.node_count();
+  if (one_node || (s.block >= 0 && B.deformable[b])) {
     const Continuum& c = m.continuum;
     Vec2 u = Vec2::Zero(), v = Vec2::Zero(), p = Vec2::Zero();
-    for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k) {
-      const auto n = static_cast<size_t>(B.node[k]);
-      u += c.pos[n] - c.pos0[n], v += c.vel[n], p += c.pos[n];
+    double w = 1.0;
+    auto add = [&](size_t n) { u += c.pos[n] - c.pos0[n], v += c.vel[n], p += c.pos[n]; };
+    if (one_node) {
+      add(static_cast<size_t>(s.node));
+    } else {
+      for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k)
+        add(static_cast<size_t>(B.node[k]));
+      w = 1.0 / static_cast<double>(B.vertex_count(b));
     }
-    const double w = 1.0 / static_cast<double>(B.vertex_count(b));
     switch (s.quantity) {
       case HistoryQuantity::kXDisp:
         return w * u.x();
