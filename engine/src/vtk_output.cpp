@@ -29,6 +29,26 @@ void array(std::ostream& out, const char* type, const char* name, int comps, siz
   out << "</DataArray>\n";
 }
 
+// Plane vectors as 3-component tuples (z = 0).
+template <class F>
+void vec2_array(std::ostream& out, const char* name, size_t n, F vec) {
+  array(out, "Float64", name, 3, n, [&](size_t k) {
+    const Vec2 v = vec(k / 3);
+    return k % 3 == 0 ? v.x() : k % 3 == 1 ? v.y() : 0.0;
+  });
+}
+
+// File header, piece sizes and the points of a PolyData piece of polygons or lines.
+template <class F>
+void begin_piece(std::ostream& out, size_t points, size_t cells, const char* cell_kind, F point) {
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n"
+      << "<PolyData>\n<Piece NumberOfPoints=\"" << points << "\" NumberOf" << cell_kind << "=\""
+      << cells << "\">\n<Points>\n";
+  vec2_array(out, "Points", points, point);
+  out << "</Points>\n";
+}
+
 std::ofstream open_file(const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
@@ -39,15 +59,8 @@ void write_blocks(const Model& m, const std::string& path) {
   const Blocks& B = m.blocks;
   const size_t n = B.size(), nv = B.world_vertex.size();
   std::ofstream out = open_file(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-         "byte_order=\"LittleEndian\">\n"
-      << "<PolyData>\n<Piece NumberOfPoints=\"" << nv << "\" NumberOfPolys=\"" << n << "\">\n";
-  out << "<Points>\n";
-  array(out, "Float64", "Points", 3, nv, [&](size_t k) {
-    const Vec2& p = B.world_vertex[k / 3];
-    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
-  });
-  out << "</Points>\n<Polys>\n";
+  begin_piece(out, nv, n, "Polys", [&](size_t v) { return B.world_vertex[v]; });
+  out << "<Polys>\n";
   array(out, "Int64", "connectivity", 1, nv, [](size_t k) { return k; });
   array(out, "Int64", "offsets", 1, n, [&](size_t b) { return B.vert_begin[b + 1]; });
   out << "</Polys>\n<CellData Scalars=\"group\">\n";
@@ -55,14 +68,9 @@ void write_blocks(const Model& m, const std::string& path) {
   array(out, "Int32", "group", 1, n, [&](size_t b) { return B.group[b]; });
   array(out, "Int32", "material", 1, n, [&](size_t b) { return B.material[b]; });
   array(out, "Int32", "fixed", 1, n, [&](size_t b) { return B.fixity[b]; });
-  array(out, "Float64", "velocity", 3, n, [&](size_t k) {
-    const size_t b = k / 3;
-    return k % 3 == 0 ? B.vx[b] : k % 3 == 1 ? B.vy[b] : 0.0;
-  });
-  array(out, "Float64", "displacement", 3, n, [&](size_t k) {
-    const size_t b = k / 3;
-    return k % 3 == 0 ? B.x[b] - B.x_ref[b] : k % 3 == 1 ? B.y[b] - B.y_ref[b] : 0.0;
-  });
+  vec2_array(out, "velocity", n, [&](size_t b) { return Vec2(B.vx[b], B.vy[b]); });
+  vec2_array(out, "displacement", n,
+             [&](size_t b) { return Vec2(B.x[b] - B.x_ref[b], B.y[b] - B.y_ref[b]); });
   array(out, "Float64", "rotation", 1, n, [&](size_t b) { return B.theta[b]; });
   array(out, "Float64", "angular_velocity", 1, n, [&](size_t b) { return B.omega[b]; });
   out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
@@ -74,18 +82,13 @@ void write_contacts(const Model& m, const std::string& path) {
   const Blocks& B = m.blocks;
   const size_t n = C.size();
   std::ofstream out = open_file(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-         "byte_order=\"LittleEndian\">\n"
-      << "<PolyData>\n<Piece NumberOfPoints=\"" << 2 * n << "\" NumberOfLines=\"" << n << "\">\n";
   // Each contact is drawn as a segment of its length along the interface.
-  out << "<Points>\n";
-  array(out, "Float64", "Points", 3, 2 * n, [&](size_t k) {
-    const size_t i = k / 6, end = (k / 3) % 2;
-    const Vec2 t = perp(C.normal[i]) * (0.5 * std::max(C.length[i], 1e-6) * (end ? 1.0 : -1.0));
-    const Vec2 p = C.point[i] + t;
-    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
+  begin_piece(out, 2 * n, n, "Lines", [&](size_t k) {
+    const size_t i = k / 2;
+    return Vec2(C.point[i] +
+                perp(C.normal[i]) * (0.5 * std::max(C.length[i], 1e-6) * (k % 2 ? 1.0 : -1.0)));
   });
-  out << "</Points>\n<Lines>\n";
+  out << "<Lines>\n";
   array(out, "Int64", "connectivity", 1, 2 * n, [](size_t k) { return k; });
   array(out, "Int64", "offsets", 1, n, [](size_t i) { return 2 * (i + 1); });
   out << "</Lines>\n<CellData Scalars=\"normal_force\">\n";
@@ -103,10 +106,7 @@ void write_contacts(const Model& m, const std::string& path) {
   array(out, "Int32", "joint_tag", 1, n, [&](size_t i) { return C.tag[i]; });
   array(out, "Int32", "block_a", 1, n, [&](size_t i) { return B.id[C.a[i]]; });
   array(out, "Int32", "block_b", 1, n, [&](size_t i) { return B.id[C.b[i]]; });
-  array(out, "Float64", "normal", 3, n, [&](size_t k) {
-    const Vec2& v = C.normal[k / 3];
-    return k % 3 == 0 ? v.x() : k % 3 == 1 ? v.y() : 0.0;
-  });
+  vec2_array(out, "normal", n, [&](size_t i) { return C.normal[i]; });
   out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
@@ -117,26 +117,13 @@ void write_zones(const Model& m, const std::string& path) {
   const Continuum& c = m.continuum;
   const size_t nn = c.node_count(), nz = c.zone_count();
   std::ofstream out = open_file(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-         "byte_order=\"LittleEndian\">\n"
-      << "<PolyData>\n<Piece NumberOfPoints=\"" << nn << "\" NumberOfPolys=\"" << nz << "\">\n";
-  out << "<Points>\n";
-  array(out, "Float64", "Points", 3, nn, [&](size_t k) {
-    const Vec2& p = c.pos[k / 3];
-    return k % 3 == 0 ? p.x() : k % 3 == 1 ? p.y() : 0.0;
-  });
-  out << "</Points>\n<Polys>\n";
+  begin_piece(out, nn, nz, "Polys", [&](size_t n) { return c.pos[n]; });
+  out << "<Polys>\n";
   array(out, "Int64", "connectivity", 1, 3 * nz, [&](size_t k) { return c.zones[k / 3][k % 3]; });
   array(out, "Int64", "offsets", 1, nz, [](size_t z) { return 3 * (z + 1); });
   out << "</Polys>\n<PointData Vectors=\"displacement\">\n";
-  array(out, "Float64", "displacement", 3, nn, [&](size_t k) {
-    const Vec2 u = c.pos[k / 3] - c.pos0[k / 3];
-    return k % 3 == 0 ? u.x() : k % 3 == 1 ? u.y() : 0.0;
-  });
-  array(out, "Float64", "velocity", 3, nn, [&](size_t k) {
-    const Vec2& v = c.vel[k / 3];
-    return k % 3 == 0 ? v.x() : k % 3 == 1 ? v.y() : 0.0;
-  });
+  vec2_array(out, "displacement", nn, [&](size_t n) { return Vec2(c.pos[n] - c.pos0[n]); });
+  vec2_array(out, "velocity", nn, [&](size_t n) { return c.vel[n]; });
   out << "</PointData>\n<CellData Scalars=\"syy\">\n";
   array(out, "Float64", "sxx", 1, nz, [&](size_t z) { return c.stress[z].xx; });
   array(out, "Float64", "syy", 1, nz, [&](size_t z) { return c.stress[z].yy; });
