@@ -175,9 +175,11 @@ void update_interfaces(Model& m) {
           }
           // A node of a deformable block stands for its own stretch of outline at most: a
           // light node alone against a long edge must not take the edge's stiffness.
-          if (B.deformable[C.a[c0]])
+          // (A pair's contacts can be owned by either block: checked per contact.)
+          if (B.deformable[C.a[c0]] || B.deformable[C.b[c0]])
             for (uint32_t i = c0; i < c1; ++i) {
               const uint32_t v = C.corner[i], blk = C.a[i];
+              if (!B.deformable[blk]) continue;
               const uint32_t prev = v > B.vert_begin[blk] ? v - 1 : B.vert_begin[blk + 1] - 1;
               const double own = 0.5 * (B.edge_length[v] + B.edge_length[prev]);
               C.length[i] = std::min(C.length[i], std::max(own, C.chord[i]));
