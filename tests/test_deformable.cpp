@@ -66,27 +66,35 @@ class TestDeformable : public QObject {
 
   // A pressure on the wall of an opening (picked by the opening's name) pushes the wall outward.
   // Lame's thick cylinder (plane strain, outer boundary held at b) gives u(a) = B (1 - a^2/b^2),
-  // B = p / (2G/a^2 + 2(lambda + G)/b^2); the model moves 24% less, not yet explained (the same
-  // grading in the kernel's Kirsch test is within 1.2%), so this checks direction and order only.
+  // B = p / (2G/a^2 + 2(lambda + G)/b^2); within 3% at the side and at the crown (the square's
+  // corners beyond b = 20 m add < 0.3%). The tunnel leaves the rock as two blocks split by a
+  // joint named 'split', which must hold the tensile hoop stress: left as weak as the other
+  // joints, it opens and the crown moves 2.5 times as far.
   void pressureOnAnOpening() {
     ScriptRun r;
     r.run(
         "round 0.01\nmaterial define rock density=2500 E=10e9 nu=0.25\n"
         "joint define j kn=1e12 ks=1e12 friction=40\njoint assign j\n"
+        "joint define glue kn=1e12 ks=1e12 friction=40 cohesion=1e9 tension=1e9\n"
         "region -20,-20 20,20 material=rock group=rock\n"
         "tunnel circle centre=0,0 radius=1 segments=48 name=hole group=hole\n"
+        "joint assign glue joints=split\n"
         "delete group=hole\n"
         "zone generate edge=4 fine=0.15 near=0,0 radius=1 growth=0.3\n"
         "boundary fix=xy x=-20.01,-19.99\nboundary fix=xy x=19.99,20.01\n"
         "boundary fix=xy y=-20.01,-19.99\nboundary fix=xy y=19.99,20.01\n"
         "boundary pressure=1e6 joints=hole\n"
-        "history xdisp at=1.01,0 label=wall\nsolve ratio=1e-6 cycles=100000");
+        "history xdisp at=1.01,0 label=wall\nhistory ydisp at=0,1.01 label=crown\n"
+        "solve ratio=1e-6 cycles=150000");
+    QCOMPARE(r.model().blocks.size(), size_t(2));
     const double g = 10e9 / 2.5, lambda = 10e9 / 1.5 - 2 * g / 3, b = 20;
     const double big_b = 1e6 / (2 * g + 2 * (lambda + g) / (b * b));
     const double expected = big_b * (1 - 1 / (b * b));
-    const double wall = last(r.model(), "wall");
-    qInfo("wall moves %.4e m, Lame %.4e m", wall, expected);
-    QVERIFY(wall > 0.6 * expected && wall < 1.1 * expected);
+    for (const char* label : {"wall", "crown"}) {
+      const double u = last(r.model(), label);
+      qInfo("%s moves %.4e m, Lame %.4e m", label, u, expected);
+      QVERIFY(std::abs(u / expected - 1) < 0.03);
+    }
   }
 
   // Two joints through the square, very stiff and strong: the same displacements as intact.

@@ -65,7 +65,7 @@ bool real_hole(Circulator first) {
 }
 
 // Horizontal chords from a hole to the rest of its face's boundary, which split the ring.
-std::vector<Curve> hole_splitters(Face f, Arrangement::Inner_ccb_const_iterator hole) {
+std::vector<Curve> hole_splitters(Face f, Arrangement::Inner_ccb_const_iterator hole, int tag) {
   const std::vector<Halfedge> hole_edges = boundary(*hole);
   std::vector<K::FT> ys;
   for (Halfedge e : hole_edges) ys.push_back(e->source()->point().y());
@@ -102,7 +102,7 @@ std::vector<Curve> hole_splitters(Face f, Arrangement::Inner_ccb_const_iterator 
   std::vector<Curve> out;
   for (size_t i = 0; i + 1 < xs.size(); i += 2)
     if (xs[i].second != xs[i + 1].second)
-      out.emplace_back(K::Segment_2(Point(xs[i].first, c), Point(xs[i + 1].first, c)), -1);
+      out.emplace_back(K::Segment_2(Point(xs[i].first, c), Point(xs[i + 1].first, c)), tag);
   return out;
 }
 
@@ -163,7 +163,7 @@ Vec2 interior_point(const std::vector<Vec2>& pts) {
 }
 
 CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::vector<CutLine>& cuts,
-                       double snap) {
+                       double snap, int split_tag) {
   // Every polygon edge and cut segment, exactly.
   std::vector<Curve> curves;
   auto add = [&](const Vec2& a, const Vec2& b, int tag) {
@@ -177,6 +177,7 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
     for (size_t k = 0; k + 1 < c.points.size(); ++k) add(c.points[k], c.points[k + 1], c.tag);
   Arrangement arr;
   CGAL::insert(arr, curves.begin(), curves.end());
+  size_t splits = 0;
   // Split the faces that enclose holes until none does.
   for (int pass = 0; pass < 16; ++pass) {
     std::vector<Curve> splitters;
@@ -185,11 +186,12 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
       if (f->is_unbounded()) continue;
       for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h)
         if (real_hole(*h)) {
-          for (Curve& c : hole_splitters(f, h)) splitters.push_back(c);
+          for (Curve& c : hole_splitters(f, h, split_tag)) splitters.push_back(c);
           break;  // one hole per face per pass
         }
     }
     if (splitters.empty()) break;
+    splits += splitters.size();
     for (const Curve& c : splitters) CGAL::insert(arr, c);
   }
   // Bounding boxes of the input polygons in a grid, to find the parent of each face.
@@ -254,6 +256,7 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
   });
   // Snap vertices within `snap` to the first one met, the same for every piece.
   CutResult out;
+  out.splits = splits;
   const double h = snap > 0.0 ? snap : 1e-12 * std::max(size, 1.0);
   std::unordered_map<int64_t, std::vector<Vec2>> grid;
   auto snapped = [&](const Vec2& v) {

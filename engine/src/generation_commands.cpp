@@ -119,7 +119,7 @@ void Interpreter::cmd_jset(Args& a) {
         }
       }
   }
-  const size_t dropped = cut_blocks(model_, traces, target.selection);
+  const size_t dropped = cut_blocks(model_, traces, target.selection).slivers_dropped;
   if (dropped)
     log("jset: " + std::to_string(dropped) + " sliver(s) below the snapping tolerance dropped");
   overlap_checked_ = false;
@@ -170,7 +170,10 @@ void Interpreter::cmd_tunnel(Args& a) {
   done(a);
   if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
   outline.push_back(outline.front());
-  cut_blocks(model_, {CutLine{outline, joint_tag(model_, name)}}, {});
+  if (cut_blocks(model_, {CutLine{outline, joint_tag(model_, name)}}, {}).splits > 0)
+    log("tunnel: the rock around the opening is split by a horizontal joint named 'split' (blocks "
+        "cannot have holes); give it properties that keep it shut, e.g. 'joint assign NAME "
+        "joints=split' with a high tensile strength and cohesion");
   // The blocks inside the outline form a group, ready to be excavated with 'delete'.
   const int g = model_.group_index(group, true);
   outline.pop_back();

@@ -183,7 +183,7 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   build_adjacency(m);
 }
 
-size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
+CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
   if (m.cycle > 0) throw ModelError("blocks can be cut only before the first cycle");
   for (const auto& s : m.histories.series)
     if (s.block >= 0)
@@ -207,11 +207,15 @@ size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<
          {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
     from.push_back(b);
   }
-  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0));
+  // The split tag is named only if a split is made.
+  const auto named = std::find(m.joint_tags.begin(), m.joint_tags.end(), "split");
+  const int split_tag = static_cast<int>(named - m.joint_tags.begin());
+  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0), split_tag);
+  if (r.splits > 0 && named == m.joint_tags.end()) m.joint_tags.push_back("split");
   std::vector<size_t> parents;
   for (size_t k = 0; k < r.pieces.size(); ++k) parents.push_back(from[r.parent[k]]);
   replace_blocks(m, old, in, r.pieces, parents);
-  return r.slivers_dropped;
+  return {r.slivers_dropped, r.splits};
 }
 
 void join_blocks(Model& m, const std::vector<size_t>& chosen) {

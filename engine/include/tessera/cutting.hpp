@@ -5,7 +5,8 @@
 // vertex or along an existing edge leaves no sliver. A segment splits a block only where it
 // crosses it from boundary to boundary; a trace that ends inside a block leaves it whole (as in
 // UDEC). A piece that would enclose a hole (an opening cut inside a single block) is split by
-// a horizontal crack through the hole, since blocks are simple polygons. The pieces' vertices
+// a horizontal crack through the hole, since blocks are simple polygons: a fictitious joint with
+// its own tag, so that it can be given properties that keep it shut. The pieces' vertices
 // are rounded to doubles and snapped together within a tolerance, the same way for every
 // piece, so that neighbours keep matching vertices. Only cutting.cpp includes CGAL.
 #pragma once
@@ -33,12 +34,14 @@ struct CutResult {
   std::vector<TaggedPolygon> pieces;  // counter-clockwise, in a canonical order
   std::vector<size_t> parent;         // index of the input polygon each piece came from
   size_t slivers_dropped = 0;         // pieces that snapping reduced to nothing
+  size_t splits = 0;                  // chords added to split rings around holes
 };
 
 // Cuts the polygons (which must not overlap) along the lines. `snap`: vertices closer than this
-// become one. Edges along a cut take its tag; where cuts overlap, the later one's tag.
+// become one. Edges along a cut take its tag; where cuts overlap, the later one's tag. Chords
+// that split rings around holes take `split_tag`.
 CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::vector<CutLine>& cuts,
-                       double snap);
+                       double snap, int split_tag = -1);
 
 // A point strictly inside a simple polygon (the middle of its widest horizontal chord).
 Vec2 interior_point(const std::vector<Vec2>& pts);

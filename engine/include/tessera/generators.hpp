@@ -62,8 +62,12 @@ std::vector<CutLine> voronoi_traces(const Vec2& lo, const Vec2& hi, double size,
 
 // Cuts the chosen blocks (all if `chosen` is empty) along the lines; pieces keep their parent's
 // group, material and fixity. Only before the first cycle: blocks are renumbered 1, 2, ... and
-// contacts are made anew. Returns the number of slivers that snapping dropped.
-size_t cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen);
+// contacts are made anew. A ring left around a hole is split by chords named "split" (joint
+// tags). Reports the slivers that snapping dropped and the chords added.
+struct CutReport {
+  size_t slivers_dropped = 0, splits = 0;
+};
+CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen);
 
 // Joins blocks that touch along edges into one (possibly concave) block; before the first
 // cycle only. Throws ModelError saying why when the union is not one simple polygon.
