@@ -162,7 +162,8 @@ class TestScriptErrors : public QObject {
                 "test:5: block 1: its material has no elastic constants"));
     QVERIFY(has(error_of(blk + "zone generate"), "zone generate needs edge="));
     QVERIFY(has(error_of(blk + "boundary fix=x"), "there are no zones"));
-    QVERIFY(has(error_of(blk + "insitu stress=0,-1e6,0"), "there are no zones"));
+    QVERIFY(has(error_of(blk + "insitu stress=0,-1e6,0"),
+                "test:5: nothing takes the stress: there are no zones and no shut joints"));
     QVERIFY(has(error_of(std::string(kBase) + "material define soft density=2000 E=1e9"),
                 "material 'soft' needs both E and nu"));
     QVERIFY(has(error_of(std::string(kBase) + "material define soft density=2000 E=1e9 nu=0.6"),

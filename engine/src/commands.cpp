@@ -439,22 +439,26 @@ void Interpreter::cmd_damping(Args& a) {
 }
 
 void Interpreter::cmd_timestep(Args& a) {
-  if (a.words.empty()) fail("write 'timestep auto [safety=S]' or 'timestep fixed DT'");
+  if (a.words.empty())
+    fail("write 'timestep auto [safety=S]', 'timestep scaled [safety=S]' or 'timestep fixed DT'");
   Settings& s = model_.settings;
-  if (a.words[0] == "auto") {
+  if (a.words[0] == "auto" || a.words[0] == "scaled") {
     if (a.words.size() > 1) fail("unexpected word '" + a.words[1] + "'");
     take_num(a, "safety", s.dt_safety);
     done(a);
     if (s.dt_safety <= 0.0 || s.dt_safety > 1.0)
       fail("the time step safety factor must be in (0, 1]");
     s.dt_fixed = 0.0;
+    s.dt_scaled = a.words[0] == "scaled";
   } else if (a.words[0] == "fixed") {
     if (a.words.size() != 2) fail("write 'timestep fixed DT'");
     done(a);
     s.dt_fixed = num(a.words[1]);
     if (s.dt_fixed <= 0.0) fail("the time step must be positive");
+    s.dt_scaled = 0;
   } else {
-    fail("'" + a.words[0] + "' is not a time step mode (auto or fixed)");
+    fail("'" + a.words[0] + "' is not a time step mode" +
+         suggest(a.words[0], {"auto", "scaled", "fixed"}));
   }
   model_.dt_dirty = true;
 }

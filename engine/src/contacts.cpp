@@ -6,8 +6,8 @@ void Contacts::clear() {
   a.clear(), b.clear(), corner.clear(), slot.clear(), kind.clear(), feature.clear(), flags.clear();
   joint.clear(), tag.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(),
       length.clear();
-  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), force.clear(),
-      force_mag.clear();
+  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), closure.clear();
+  force.clear(), force_mag.clear();
   pair_begin.assign(1, 0);
 }
 
@@ -20,7 +20,8 @@ void Contacts::push_from(const Contacts& s, size_t i) {
   gap.push_back(s.gap[i]), chord.push_back(s.chord[i]), length.push_back(s.length[i]);
   fn.push_back(s.fn[i]), fs.push_back(s.fs[i]), un_prev.push_back(s.un_prev[i]);
   dilation.push_back(s.dilation[i]);
-  shear_disp.push_back(s.shear_disp[i]), force.push_back(s.force[i]);
+  shear_disp.push_back(s.shear_disp[i]), closure.push_back(s.closure[i]);
+  force.push_back(s.force[i]);
   force_mag.push_back(s.force_mag[i]);
 }
 
@@ -32,7 +33,7 @@ void Contacts::push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot
   normal.push_back(Vec2::Zero()), point.push_back(Vec2::Zero());
   gap.push_back(0.0), chord.push_back(0.0), length.push_back(0.0);
   fn.push_back(0.0), fs.push_back(0.0), un_prev.push_back(0.0), dilation.push_back(0.0);
-  shear_disp.push_back(0.0);
+  shear_disp.push_back(0.0), closure.push_back(0.0);
   force.push_back(Vec2::Zero());
   force_mag.push_back(0.0);
 }

@@ -14,7 +14,8 @@ uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
   for (const Vec2& p : mesh.nodes) {
     c.pos.push_back(p), c.pos0.push_back(p);
     c.vel.emplace_back(0, 0), c.force.emplace_back(0, 0), c.applied.emplace_back(0, 0);
-    c.mass.push_back(0), c.fixity.push_back(0), c.fixed_vel.emplace_back(0, 0);
+    c.mass.push_back(0), c.inertia.push_back(0), c.fixity.push_back(0);
+    c.fixed_vel.emplace_back(0, 0);
   }
   for (const auto& t : mesh.triangles) {
     c.zones.push_back({first + t[0], first + t[1], first + t[2]});
@@ -56,21 +57,23 @@ void lump_masses(Continuum& c) {
     const double m = p.density * zone_area(c, z) / 3.0;
     for (uint32_t n : c.zones[z]) c.mass[n] += m;
   }
+  c.inertia = c.mass;
+}
+
+double zone_timestep(const Continuum& c, size_t z) {
+  const ZoneProperties& p = c.materials[c.material[z]];
+  if (!p.impl->solid()) return 1e300;
+  const auto& t = c.zones[z];
+  double longest = 0;
+  for (int k = 0; k < 3; ++k)
+    longest = std::max(longest, (c.pos[t[(k + 1) % 3]] - c.pos[t[k]]).norm());
+  const double height = 2.0 * zone_area(c, z) / longest;
+  return height / std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.density);
 }
 
 double critical_timestep(const Continuum& c, double safety) {
   double dt = 1e300;
-  for (size_t z = 0; z < c.zones.size(); ++z) {
-    const ZoneProperties& p = c.materials[c.material[z]];
-    if (!p.impl->solid()) continue;
-    const auto& t = c.zones[z];
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, (c.pos[t[(k + 1) % 3]] - c.pos[t[k]]).norm());
-    const double height = 2.0 * zone_area(c, z) / longest;
-    const double cp = std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.density);
-    dt = std::min(dt, height / cp);
-  }
+  for (size_t z = 0; z < c.zones.size(); ++z) dt = std::min(dt, zone_timestep(c, z));
   return safety * dt;
 }
 
@@ -173,7 +176,7 @@ double move_nodes(Continuum& c) {
       max_unbalanced = std::max(max_unbalanced, std::abs(f[k]));
       const double v = c.vel[n][k];
       f[k] -= c.local_damping * std::abs(f[k]) * (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0);
-      c.vel[n][k] = v + c.dt * f[k] / c.mass[n];
+      c.vel[n][k] = v + c.dt * f[k] / c.inertia[n];
     }
     sum_applied += scale[n];
     ++free_nodes;

@@ -194,10 +194,17 @@ void update_interfaces(Model& m) {
               continue;
             }
             // Open, unbonded, and open before: nothing to do but remember the opening.
-            const double un = -C.gap[i] + C.dilation[i];
+            const double overlap = -C.gap[i] + C.closure[i];
+            const double un = overlap + C.dilation[i];
             if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
               C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+              C.flags[i] &= static_cast<uint8_t>(~kPreload);
               continue;
+            }
+            // An in-situ shear stress becomes a force once the contact has its length.
+            if (C.flags[i] & kPreload) {
+              C.fs[i] *= C.length[i];
+              C.flags[i] &= static_cast<uint8_t>(~kPreload);
             }
             // Shear displacement increment of a relative to b over the last step.
             const Vec2 n = C.normal[i], tn = perp(n);
@@ -210,7 +217,7 @@ void update_interfaces(Model& m) {
             JointState s{C.fn[i],       C.fs[i],         C.un_prev[i],
                          C.dilation[i], C.shear_disp[i], C.flags[i]};
             const JointProperties& jp = m.joints[C.joint[i]];
-            jp.impl->update(jp, C.length[i], -C.gap[i], dus, s);
+            jp.impl->update(jp, C.length[i], overlap, dus, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
             C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
             C.force[i] = s.fn * n + s.fs * tn;
@@ -402,11 +409,16 @@ void prepare(Model& m) {
       throw ModelError("block " + std::to_string(m.blocks.id[b]) +
                        " has no mass: give it a material with a density");
   if (m.dt_dirty) {
+    scale_node_inertia(m);
     m.dt = compute_timestep(m);
     m.dt_dirty = false;
   }
   if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
   if (m.block_contact_begin.size() != m.blocks.size() + 1) build_adjacency(m);
+}
+
+void update_contact_geometry(Model& m) {
+  update_contacts(m);
 }
 
 void cycle(Model& m) {

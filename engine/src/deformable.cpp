@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <vector>
 
 #include "tessera/geometry.hpp"
 
@@ -121,6 +122,28 @@ void update_deformable_world(Model& m) {
   }
 }
 
+std::vector<int> node_owners(const Model& m) {
+  const Blocks& B = m.blocks;
+  const Continuum& c = m.continuum;
+  // Each block's mesh is its own connected set of zones: join nodes through zones (union-find),
+  // then name each set after the block of an outline node in it.
+  std::vector<uint32_t> root(c.node_count());
+  for (uint32_t n = 0; n < root.size(); ++n) root[n] = n;
+  auto find = [&](uint32_t n) {
+    while (root[n] != n) n = root[n] = root[root[n]];
+    return n;
+  };
+  for (const auto& t : c.zones)
+    for (int k = 1; k < 3; ++k) root[find(t[k])] = find(t[0]);
+  std::vector<int> set_block(c.node_count(), -1), owner(c.node_count(), -1);
+  for (size_t b = 0; b < B.size(); ++b)
+    if (B.deformable[b])
+      for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+        set_block[find(static_cast<uint32_t>(B.node[v]))] = static_cast<int>(b);
+  for (uint32_t n = 0; n < root.size(); ++n) owner[n] = set_block[find(n)];
+  return owner;
+}
+
 void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
   const Blocks& B = m.blocks;
   Continuum& c = m.continuum;
@@ -131,23 +154,7 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
       for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) any = true;
   if (!any) return;
   // Nodes of a doomed block: every node of its zones.
-  std::vector<int> zone_block(c.zone_count(), -1);
-  std::vector<int> node_block(c.node_count(), -1);
-  for (size_t b = 0; b < B.size(); ++b)
-    if (B.deformable[b])
-      for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
-        node_block[static_cast<size_t>(B.node[v])] = static_cast<int>(b);
-  // Interior nodes belong to the block of any zone touching one of its outline nodes.
-  for (int pass = 0; pass < 64; ++pass) {
-    bool changed = false;
-    for (const auto& t : c.zones) {
-      int owner = -1;
-      for (uint32_t n : t) owner = std::max(owner, node_block[n]);
-      for (uint32_t n : t)
-        if (node_block[n] < 0 && owner >= 0) node_block[n] = owner, changed = true;
-    }
-    if (!changed) break;
-  }
+  const std::vector<int> node_block = node_owners(m);
   std::vector<int64_t> map(c.node_count(), -1);
   Continuum kept;
   kept.materials = c.materials, kept.gravity = c.gravity, kept.local_damping = c.local_damping;
@@ -157,7 +164,8 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
     map[n] = static_cast<int64_t>(kept.pos.size());
     kept.pos.push_back(c.pos[n]), kept.pos0.push_back(c.pos0[n]), kept.vel.push_back(c.vel[n]);
     kept.force.push_back(c.force[n]), kept.applied.push_back(c.applied[n]);
-    kept.mass.push_back(c.mass[n]), kept.fixity.push_back(c.fixity[n]);
+    kept.mass.push_back(c.mass[n]), kept.inertia.push_back(c.inertia[n]);
+    kept.fixity.push_back(c.fixity[n]);
     kept.fixed_vel.push_back(c.fixed_vel[n]);
   }
   for (size_t z = 0; z < c.zone_count(); ++z) {
@@ -175,6 +183,13 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
     if (W.deformable[b] && !doomed[b])
       for (uint32_t v = W.vert_begin[b]; v < W.vert_begin[b + 1]; ++v)
         W.node[v] = static_cast<int32_t>(map[static_cast<size_t>(W.node[v])]);
+  // Histories at a node follow its new number; those of removed nodes end (as for blocks).
+  for (auto& s : m.histories.series)
+    if (s.node >= 0 && static_cast<size_t>(s.node) < map.size()) {
+      const int64_t n = map[static_cast<size_t>(s.node)];
+      s.node = n >= 0 ? static_cast<int32_t>(n) : -1;
+      if (n < 0) s.block = -2;
+    }
   m.det_node.clear();
 }
 
@@ -241,12 +256,19 @@ void add_contact_forces_to_nodes(Model& m) {
   }
 }
 
-double deformable_timestep(const Model& m) {
+namespace {
+// Each node's own stable step with its lumped mass (1e300 for a massless node): the smallest of
+// its zones', and for an outline node, its mass against the stiffest joint over its share of
+// the outline (normal and shear springs together), counted four times: a node bears its own
+// contact and the other side's contact on its edges, and the two nodes move against each other
+// (a corner node at a joint junction flip-flopped every cycle with the count of one).
+std::vector<double> node_timesteps(const Model& m) {
   const Continuum& c = m.continuum;
-  if (c.zone_count() == 0) return 1e300;
-  double dt = critical_timestep(c, 1.0);
-  // A boundary node against the stiffest joint over its share of the outline (normal and
-  // shear springs together).
+  std::vector<double> dt(c.node_count(), 1e300);
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    const double s = zone_timestep(c, z);
+    for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
+  }
   double kmax = 0;
   for (const auto& j : m.joints) kmax = std::max(kmax, j.kn + j.ks);
   const Blocks& B = m.blocks;
@@ -256,11 +278,38 @@ double deformable_timestep(const Model& m) {
       for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
         const uint32_t prev = v > B.vert_begin[b] ? v - 1 : B.vert_begin[b + 1] - 1;
         const double share = 0.5 * (B.edge_length[v] + B.edge_length[prev]);
-        const double mass = c.mass[static_cast<size_t>(B.node[v])];
-        if (mass > 0) dt = std::min(dt, 2.0 * std::sqrt(mass / (kmax * share)));
+        const auto n = static_cast<size_t>(B.node[v]);
+        if (c.mass[n] > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (kmax * share)));
       }
     }
   return dt;
+}
+
+// The step of the deformable blocks from the nodes' own: the smallest, or under density
+// scaling the median over the nodes with mass.
+double pick_step(const Model& m, std::vector<double> steps) {
+  std::erase_if(steps, [](double s) { return s >= 1e300; });
+  if (steps.empty()) return 1e300;
+  if (!m.settings.dt_scaled) return *std::min_element(steps.begin(), steps.end());
+  const auto mid = steps.begin() + static_cast<long>(steps.size() / 2);
+  std::nth_element(steps.begin(), mid, steps.end());
+  return *mid;
+}
+}  // namespace
+
+double deformable_timestep(const Model& m) {
+  if (m.continuum.zone_count() == 0) return 1e300;
+  return pick_step(m, node_timesteps(m));
+}
+
+void scale_node_inertia(Model& m) {
+  Continuum& c = m.continuum;
+  c.inertia = c.mass;
+  if (!m.settings.dt_scaled || c.zone_count() == 0) return;
+  const std::vector<double> steps = node_timesteps(m);
+  const double target = pick_step(m, steps);
+  for (size_t n = 0; n < c.node_count(); ++n)
+    if (steps[n] < target) c.inertia[n] = c.mass[n] * (target / steps[n]) * (target / steps[n]);
 }
 
 }  // namespace tessera

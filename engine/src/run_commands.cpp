@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tessera/deformable.hpp"
 #include "tessera/expr.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/script.hpp"
@@ -123,7 +124,7 @@ void Interpreter::cmd_history(Args& a) {
     a.words.clear();
     std::string label;
     const bool has_label = take(a, "label", label);
-    // For a deformable block, the node nearest the point (or the centroid).
+    // For a deformable block, its node nearest the point (or the centroid).
     Vec2 where(std::nan(""), std::nan(""));
     for (const auto& kv : a.keys)
       if (kv.first == "at") where = point(kv.second);
@@ -133,9 +134,11 @@ void Interpreter::cmd_history(Args& a) {
     if (model_.blocks.deformable[sel[0]]) {
       if (std::isnan(where.x())) where = {model_.blocks.x[sel[0]], model_.blocks.y[sel[0]]};
       const Continuum& c = model_.continuum;
+      const std::vector<int> owner = node_owners(model_);
       double best = 1e300;
       for (size_t n = 0; n < c.node_count(); ++n)
-        if (const double d = (c.pos[n] - where).norm(); d < best)
+        if (const double d = (c.pos[n] - where).norm();
+            d < best && owner[n] == static_cast<int>(sel[0]))
           best = d, s.node = static_cast<int32_t>(n);
     }
     s.label = has_label         ? label

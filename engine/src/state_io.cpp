@@ -15,7 +15,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 5;
+constexpr uint32_t kVersion = 6;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -92,7 +92,7 @@ void fields(IO& io, auto& m) {
   auto& S = m.settings;
   io.pod(S.gravity.x()), io.pod(S.gravity.y()), io.pod(S.rounding), io.pod(S.contact_tolerance);
   io.pod(S.damping), io.pod(S.local_alpha), io.pod(S.global_ratio), io.pod(S.dt_safety);
-  io.pod(S.dt_fixed);
+  io.pod(S.dt_fixed), io.pod(S.dt_scaled);
   auto& B = m.blocks;
   for (auto* v : B.block_doubles()) io.vec(*v);
   io.vec(B.arc_radius), io.vec(B.round_length);
@@ -106,7 +106,7 @@ void fields(IO& io, auto& m) {
       io.vec(C.flags);
   io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
-  io.vec(C.shear_disp);
+  io.vec(C.shear_disp), io.vec(C.closure);
   io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
   io.pod(count);
@@ -146,7 +146,8 @@ void fields(IO& io, auto& m) {
   io.pod(m.detection_passes);
   auto& Z = m.continuum;
   io.vec(Z.pos), io.vec(Z.pos0), io.vec(Z.vel), io.vec(Z.force), io.vec(Z.applied);
-  io.vec(Z.mass), io.vec(Z.fixity), io.vec(Z.fixed_vel), io.vec(Z.zones), io.vec(Z.stress);
+  io.vec(Z.mass), io.vec(Z.inertia), io.vec(Z.fixity), io.vec(Z.fixed_vel), io.vec(Z.zones),
+      io.vec(Z.stress);
   io.vec(Z.state), io.vec(Z.material), io.pod(Z.local_damping), io.pod(Z.dt), io.pod(Z.time);
   io.pod(Z.cycle), io.pod(Z.ratio), io.vec(m.det_node);
 }

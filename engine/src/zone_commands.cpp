@@ -4,6 +4,7 @@
 
 #include "tessera/deformable.hpp"
 #include "tessera/expr.hpp"
+#include "tessera/insitu.hpp"
 #include "tessera/script.hpp"
 
 namespace tessera {
@@ -205,7 +206,7 @@ void Interpreter::cmd_insitu(Args& a) {
   }
   take_num(a, "y0", y0);
   done(a);
-  if (c.zone_count() == 0) fail("there are no zones: 'zone generate' makes blocks deformable");
+  if (model_.blocks.size() == 0) fail("there are no blocks to take the stress");
   initialize_stress(c, s0, g, y0);
   // The out-of-plane stress of plane strain, unless given: nu (sxx + syy) per zone.
   if (!has_zz)
@@ -215,7 +216,12 @@ void Interpreter::cmd_insitu(Args& a) {
       const double nu = (3 * p.bulk - 2 * p.shear) / (2 * (3 * p.bulk + p.shear));
       c.stress[z].zz = nu * (c.stress[z].xx + c.stress[z].yy);
     }
-  log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones");
+  // The joints: tractions of the same field on every shut contact.
+  const size_t loaded = preload_contacts(model_, StressField{s0, g, y0});
+  if (c.zone_count() == 0 && loaded == 0)
+    fail("nothing takes the stress: there are no zones and no shut joints");
+  log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones and on " +
+      std::to_string(loaded) + " joint contacts");
 }
 
 }  // namespace tessera

@@ -37,6 +37,7 @@ enum ContactFlag : uint8_t {
   kTouching = 4,  // overlap or bond: carries force and takes a share of the interface length
   kBroken = 8,    // was bonded and failed, for output
   kNotch = 16,    // a corner touching two faces of a concave block: each contact keeps its face
+  kPreload = 32,  // fs holds an in-situ shear stress, made a force at the next law call
 };
 
 struct Contacts {
@@ -55,8 +56,10 @@ struct Contacts {
   std::vector<Vec2> normal, point;
   std::vector<double> gap, chord, length;
   // Joint law state: normal and shear force on a (compression positive), the normal
-  // displacement of the last cycle, dilation and total shear displacement.
-  std::vector<double> fn, fs, un_prev, dilation, shear_disp;
+  // displacement of the last cycle, dilation and total shear displacement; `closure`, the
+  // normal displacement the joint had already taken under the in-situ stress (sigma_n / kn), is
+  // added to the overlap like dilation, so that a joint drawn shut starts loaded.
+  std::vector<double> fn, fs, un_prev, dilation, shear_disp, closure;
   // Force on block a this cycle (block b takes the opposite), and |Fn| + |Fs| for the ratio.
   std::vector<Vec2> force;
   std::vector<double> force_mag;

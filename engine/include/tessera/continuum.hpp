@@ -25,7 +25,8 @@ namespace tessera {
 struct Continuum {
   // Nodes.
   std::vector<Vec2> pos, pos0, vel, force, applied;  // applied: constant loads (tractions)
-  std::vector<double> mass;
+  std::vector<double> mass;                          // lumped mass: gravity and reported quantities
+  std::vector<double> inertia;  // mass in the motion: the lumped mass, or more under scaling
   std::vector<uint8_t> fixity;  // kFixX | kFixY of blocks.hpp
   std::vector<Vec2> fixed_vel;
   // Zones.
@@ -49,6 +50,8 @@ struct Continuum {
 uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material);
 // Lumped nodal masses from the zones' densities and areas (after meshes and material changes).
 void lump_masses(Continuum& c);
+// A zone's stable step: its height over the P-wave speed (1e300 for a null zone).
+double zone_timestep(const Continuum& c, size_t z);
 // Stable time step times `safety`: the smallest zone height over the P-wave speed.
 double critical_timestep(const Continuum& c, double safety = 0.5);
 // Stress in every zone: uniform `s0`, plus `gradient` times (y - y0) (e.g. for gravity).

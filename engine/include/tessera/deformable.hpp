@@ -17,6 +17,8 @@ void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* gra
 void sync_zone_materials(Model& m);
 // Refreshes the world outline of every deformable block from its nodes.
 void update_deformable_world(Model& m);
+// The block each node belongs to (-1 for none).
+std::vector<int> node_owners(const Model& m);
 // Drops the nodes and zones of the doomed blocks (before Blocks::remove with the same flags).
 void drop_deformable(Model& m, const std::vector<uint8_t>& doomed);
 // Velocity of a contact's side: of block a's corner, or of the point on block b's feature.
@@ -24,7 +26,11 @@ Vec2 contact_side_velocity(const Model& m, size_t contact, bool side_b);
 // Adds the contact forces on deformable blocks to their nodes (continuum.force), gathered in
 // a fixed order per block.
 void add_contact_forces_to_nodes(Model& m);
-// Time step limit of the deformable blocks: zones, and nodes against joint stiffness.
+// Time step limit of the deformable blocks: zones, and nodes against joint stiffness; under
+// density scaling, the median of the nodes' own limits.
 double deformable_timestep(const Model& m);
+// Each node's inertia: its lumped mass, raised under density scaling so that the node is stable
+// at the scaled step.
+void scale_node_inertia(Model& m);
 
 }  // namespace tessera

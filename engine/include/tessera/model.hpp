@@ -35,6 +35,9 @@ struct Settings {
   double global_ratio = 0.5;  // adaptive global damping: share of kinetic energy change removed
   double dt_safety = 0.5;     // time step = safety * 2 min sqrt(m/k)
   double dt_fixed = 0.0;      // a user's time step (0: automatic)
+  // Density scaling of deformable blocks for static solutions: the step is the median of the
+  // nodes' own stable steps, and nodes below it take more inertia (gravity keeps the real mass).
+  uint8_t dt_scaled = 0;
 };
 
 // Joint property set used for contacts between two groups (-1 matches any group) along joints

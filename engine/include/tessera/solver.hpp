@@ -39,6 +39,9 @@ double compute_timestep(const Model& m);
 void prepare(Model& m);
 // One cycle of the explicit scheme.
 void cycle(Model& m);
+// The first stage of a cycle alone: each contact's feature, gap, normal and point from the
+// current positions.
+void update_contact_geometry(Model& m);
 // Contact detection pass: broad phase, corner search, merge with existing contacts.
 void detect_contacts(Model& m);
 // Rebuilds the per-block contact lists from the contact array.
