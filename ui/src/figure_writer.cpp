@@ -104,12 +104,21 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   p.save();
   p.setClipRect(plot);
   const QPen edge(QColor(60, 60, 60), std::max(0.5, font_px / 25.0));
-  for (const auto& poly : s.polygons) {
-    QPolygonF q;
-    for (const Vec2& v : poly.points) q << map(v);
-    p.setPen(edge);
-    p.setBrush(qcolour(poly.colour));
-    p.drawPolygon(q);
+  // Block fills, zones over them (a hairline in their own colour closes the seams), then the
+  // block outlines on top.
+  auto draw = [&](const std::vector<ScenePolygon>& list, bool fill, bool outline) {
+    for (const auto& poly : list) {
+      QPolygonF q;
+      for (const Vec2& v : poly.points) q << map(v);
+      p.setPen(outline ? edge : fill ? QPen(qcolour(poly.colour), 0) : QPen(Qt::NoPen));
+      p.setBrush(fill ? QBrush(qcolour(poly.colour)) : QBrush(Qt::NoBrush));
+      p.drawPolygon(q);
+    }
+  };
+  draw(s.polygons, true, s.zones.empty());
+  if (!s.zones.empty()) {
+    draw(s.zones, true, false);
+    draw(s.polygons, false, true);
   }
   p.setPen(Qt::NoPen);
   for (const auto& bar : s.bars) {

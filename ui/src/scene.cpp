@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "tessera/contacts.hpp"
+#include "tessera/continuum.hpp"
 
 namespace tessera::ui {
 
@@ -26,8 +27,41 @@ double block_value(const SnapshotBlock& b, ColourBy c) {
       return b.group;
     case ColourBy::kMaterial:
       return b.material;
+    default:
+      return 0.0;  // zone quantities: see zone_value
   }
   return 0.0;
+}
+
+double zone_value(const SnapshotZone& z, ColourBy c) {
+  ZoneStress s{z.sxx, z.syy, z.sxy, z.szz};
+  double s1 = 0, s3 = 0;
+  principal_stresses(s, s1, s3);
+  switch (c) {
+    case ColourBy::kSxx:
+      return z.sxx / 1e6;
+    case ColourBy::kSyy:
+      return z.syy / 1e6;
+    case ColourBy::kSxy:
+      return z.sxy / 1e6;
+    case ColourBy::kSzz:
+      return z.szz / 1e6;
+    case ColourBy::kSigma1:
+      return s1 / 1e6;
+    case ColourBy::kSigma3:
+      return s3 / 1e6;
+    case ColourBy::kZoneState:
+      return zone_state_category(z.state);
+    default:
+      return 0.0;
+  }
+}
+
+int zone_state_category(uint8_t state) {
+  if (state & kShearNow) return 1;
+  if (state & kTensionNow) return 2;
+  if (state & (kShearPast | kTensionPast)) return 3;
+  return 0;
 }
 
 std::string value_title(ColourBy c) {
@@ -46,6 +80,20 @@ std::string value_title(ColourBy c) {
       return "group";
     case ColourBy::kMaterial:
       return "material";
+    case ColourBy::kSxx:
+      return "sxx [MPa]";
+    case ColourBy::kSyy:
+      return "syy [MPa]";
+    case ColourBy::kSxy:
+      return "sxy [MPa]";
+    case ColourBy::kSzz:
+      return "szz [MPa]";
+    case ColourBy::kSigma1:
+      return "sigma1 [MPa]";
+    case ColourBy::kSigma3:
+      return "sigma3 [MPa]";
+    case ColourBy::kZoneState:
+      return "zone state";
   }
   return "";
 }
@@ -57,8 +105,57 @@ std::string number(double v) {
   return buf;
 }
 
+// Colours of the zone states: elastic, yielding in shear or in tension now, yielded before.
+const Rgb kStateColours[4] = {{215, 215, 215}, {220, 40, 40}, {200, 60, 200}, {250, 190, 120}};
+const char* const kStateNames[4] = {"elastic", "shear now", "tension now", "yielded before"};
+const Rgb kNoZones{200, 200, 200};  // rigid blocks in a picture of zones
+
+// Zones of deformable blocks coloured by a zone quantity, with their legend.
+void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  Legend& L = out.blocks_legend;
+  L.title = value_title(o.colour);
+  const bool states = o.colour == ColourBy::kZoneState;
+  L.continuous = !states;
+  double lo = 0, hi = 0;
+  for (size_t z = 0; z < s.zones.size(); ++z) {
+    const double v = zone_value(s.zones[z], o.colour);
+    lo = z ? std::min(lo, v) : v, hi = z ? std::max(hi, v) : v;
+  }
+  if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
+  L.lo = lo, L.hi = hi;
+  if (states)
+    for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
+  else
+    out.caption += o.colour == ColourBy::kSigma1 ? "   stresses tension +, sigma1 most compressive"
+                   : o.colour == ColourBy::kSigma3
+                       ? "   stresses tension +, sigma3 least compressive"
+                       : "   stresses tension +";
+  for (const SnapshotZone& z : s.zones) {
+    ScenePolygon p;
+    p.block = z.block;
+    for (uint32_t n : z.n)
+      p.points.push_back(s.nodes_start[n] + o.magnify * (s.nodes[n] - s.nodes_start[n]));
+    const double v = zone_value(z, o.colour);
+    p.colour = states ? kStateColours[static_cast<int>(v)] : ramp((v - lo) / (hi - lo));
+    out.zones.push_back(std::move(p));
+  }
+}
+
 // Colours the block polygons and fills their legend.
 void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  if (colours_zones(o.colour)) {
+    add_zones(s, o, out);
+    for (size_t b = 0; b < s.blocks.size(); ++b) {
+      const SnapshotBlock& blk = s.blocks[b];
+      ScenePolygon p;
+      p.block = static_cast<int>(b);
+      for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v)
+        p.points.push_back(shown_vertex(s, blk, v, o.magnify));
+      p.colour = kNoZones;
+      out.polygons.push_back(std::move(p));
+    }
+    return;
+  }
   const bool categorical = o.colour == ColourBy::kGroup || o.colour == ColourBy::kMaterial;
   Legend& L = out.blocks_legend;
   L.title = value_title(o.colour);
@@ -195,8 +292,9 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
   add_arrows(s, o, out, size);
   out.lo = s.lo, out.hi = s.hi;
   // Magnified shapes may leave the box the live model fills.
-  for (const auto& p : out.polygons)
-    for (const Vec2& v : p.points) out.lo = out.lo.cwiseMin(v), out.hi = out.hi.cwiseMax(v);
+  for (const auto& list : {&out.polygons, &out.zones})
+    for (const auto& p : *list)
+      for (const Vec2& v : p.points) out.lo = out.lo.cwiseMin(v), out.hi = out.hi.cwiseMax(v);
   if (o.has_window) out.lo = o.lo, out.hi = o.hi;
   if (out.hi.x() <= out.lo.x()) out.hi.x() = out.lo.x() + 1;
   if (out.hi.y() <= out.lo.y()) out.hi.y() = out.lo.y() + 1;

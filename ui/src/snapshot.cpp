@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "tessera/deformable.hpp"
 #include "tessera/model.hpp"
 #include "tessera/script.hpp"
 
@@ -110,6 +111,23 @@ void set_joint_stretches(const Contacts& C, Snapshot& s) {
     }
   }
 }
+
+void copy_zones(const Model& m, Snapshot& s) {
+  const Continuum& c = m.continuum;
+  if (c.zone_count() == 0) return;
+  const std::vector<int> owner = node_owners(m);
+  s.nodes = c.pos, s.nodes_start = c.pos0;
+  s.zones.reserve(c.zone_count());
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    if (!c.materials[c.material[z]].impl->solid()) continue;
+    SnapshotZone o;
+    for (int k = 0; k < 3; ++k) o.n[k] = c.zones[z][static_cast<size_t>(k)];
+    o.block = owner[o.n[0]];
+    const ZoneStress& st = c.stress[z];
+    o.sxx = st.xx, o.syy = st.yy, o.sxy = st.xy, o.szz = st.zz, o.state = c.state[z];
+    s.zones.push_back(o);
+  }
+}
 }  // namespace
 
 Snapshot make_snapshot(const Model& m, const std::string& title,
@@ -167,6 +185,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     s.contacts.push_back(std::move(o));
   }
   set_joint_stretches(C, s);
+  copy_zones(m, s);
   copy_catalogue(m, s);
   for (const StageRecord& st : stages)
     s.stages.push_back(

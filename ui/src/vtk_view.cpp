@@ -71,7 +71,8 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->SetBackground(1, 1, 1);
   renderer_->GetActiveCamera()->ParallelProjectionOn();
   set_direct_colours(blocks_actor_, blocks_);
-  set_direct_colours(edges_actor_, blocks_);
+  set_direct_colours(zones_actor_, zones_);
+  set_direct_colours(edges_actor_, edges_);
   edges_actor_->GetMapper()->ScalarVisibilityOff();
   edges_actor_->GetProperty()->SetRepresentationToWireframe();
   edges_actor_->GetProperty()->SetColor(0.25, 0.25, 0.25);
@@ -80,8 +81,8 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   arrows_actor_->GetMapper()->ScalarVisibilityOff();
   arrows_actor_->GetProperty()->SetColor(0, 0, 0);
   arrows_actor_->GetProperty()->SetLineWidth(1.5);
-  for (vtkActor* a :
-       {blocks_actor_.Get(), edges_actor_.Get(), bars_actor_.Get(), arrows_actor_.Get()}) {
+  for (vtkActor* a : {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(),
+                      bars_actor_.Get(), arrows_actor_.Get()}) {
     // A flat 2D picture: colours as given, no shading.
     a->GetProperty()->LightingOff();
     renderer_->AddActor(a);
@@ -177,6 +178,11 @@ void VtkView::rebuild() {
   std::vector<Rgb> colours;
   for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
   fill_polygons(blocks_, polys, colours, 0.0);
+  // Block outlines above the zones, which sit above the block fills.
+  fill_polygons(edges_, polys, colours, 0.006);
+  polys.clear(), colours.clear();
+  for (const auto& p : scene_.zones) polys.push_back(p.points), colours.push_back(p.colour);
+  fill_polygons(zones_, polys, colours, 0.003);
   polys.clear(), colours.clear();
   for (const auto& b : scene_.bars)
     polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),

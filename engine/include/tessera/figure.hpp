@@ -23,8 +23,20 @@ enum class ColourBy : int {
   kXDisp,
   kYDisp,
   kVelocity,
-  kRotation
+  kRotation,
+  // Zones of deformable blocks (rigid blocks grey): stresses (tension positive), plastic state.
+  kSxx,
+  kSyy,
+  kSxy,
+  kSzz,
+  kSigma1,
+  kSigma3,
+  kZoneState
 };
+// Whether an option colours zones rather than whole blocks.
+inline bool colours_zones(ColourBy c) {
+  return c >= ColourBy::kSxx;
+}
 // How contacts are drawn: not at all, coloured by state (open, slipping, elastic), by normal
 // force, or by joint shear displacement. Widths always scale with normal force.
 enum class ContactShow : int { kOff, kState, kForce, kShear };

@@ -40,7 +40,8 @@ struct Legend {
 };
 
 struct Scene {
-  std::vector<ScenePolygon> polygons;
+  std::vector<ScenePolygon> polygons;  // blocks: filled, then outlined over the zones
+  std::vector<ScenePolygon> zones;     // zones of deformable blocks, when coloured by zone
   std::vector<SceneBar> bars;
   std::vector<SceneArrow> arrows;
   Legend blocks_legend, contacts_legend;
@@ -53,6 +54,10 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o);
 
 // The block value a colour option shows, and its legend title with units.
 double block_value(const SnapshotBlock& b, ColourBy c);
+// The zone value a colour option shows (stresses in MPa), and the state category of zone bits:
+// 0 elastic, 1 yielding in shear now, 2 in tension now, 3 yielded before.
+double zone_value(const SnapshotZone& z, ColourBy c);
+int zone_state_category(uint8_t state);
 std::string value_title(ColourBy c);
 // Index of the block under a model point (-1 if none) and of the contact bar (-1).
 int block_at(const Scene& scene, Vec2 p);

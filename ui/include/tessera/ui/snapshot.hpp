@@ -39,6 +39,14 @@ struct SnapshotContact {
   std::string joint;  // joint property name
 };
 
+// A zone of a deformable block: its nodes (into Snapshot::nodes), block, stress, plastic state.
+struct SnapshotZone {
+  uint32_t n[3] = {0, 0, 0};
+  int block = -1;
+  double sxx = 0, syy = 0, sxy = 0, szz = 0;
+  uint8_t state = 0;
+};
+
 // A named list of properties, for the model tree and property panel.
 struct Entry {
   std::string name;
@@ -54,6 +62,9 @@ struct Snapshot {
   std::vector<Vec2> local;  // block vertices relative to the centroid, unrotated
   std::vector<Vec2> start;  // deformable blocks: where each outline node started
   std::vector<SnapshotContact> contacts;
+  // Zones of deformable blocks, and their nodes as they are and as they started.
+  std::vector<SnapshotZone> zones;
+  std::vector<Vec2> nodes, nodes_start;
   std::vector<std::string> groups;
   std::vector<Entry> materials, joints, conditions, stages;
   // Histories, thinned to at most kHistoryRows rows spread over the whole run.

@@ -60,8 +60,8 @@ class VtkView : public QOpenGLWidget {
 
   vtkNew<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
-  vtkNew<vtkPolyData> blocks_, bars_, arrows_;
-  vtkNew<vtkActor> blocks_actor_, edges_actor_, bars_actor_, arrows_actor_;
+  vtkNew<vtkPolyData> blocks_, zones_, edges_, bars_, arrows_;
+  vtkNew<vtkActor> blocks_actor_, zones_actor_, edges_actor_, bars_actor_, arrows_actor_;
   vtkNew<vtkScalarBarActor> scalar_bar_;
   vtkNew<vtkLegendScaleActor> scale_;
   vtkNew<vtkTextActor> title_, caption_;
