@@ -18,6 +18,7 @@
 #include "tessera/ui/history_charts.hpp"
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/model_tree.hpp"
+#include "tessera/ui/scene.hpp"
 #include "tessera/ui/vtk_view.hpp"
 
 using namespace tessera;
@@ -194,6 +195,50 @@ class TestGui : public QObject {
     QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({0.95, 2.0}));
     QCOMPARE(w.properties()->heading(), QString("block 2"));
     QCOMPARE(w.properties()->value("group"), QString("left"));
+  }
+
+  // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in
+  // ramp colours, compressive blue at the foot, near zero red at the top; by state, four entries.
+  void framebufferShowsZoneStresses() {
+    const QString path = dir_.filePath("column.tess");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(
+        "round 0.01\nmaterial define stone density=2500\n"
+        "material define rock density=2000 E=1e9 nu=0.25\n"
+        "joint define j kn=1e11 ks=1e11 friction=30\njoint assign j\n"
+        "block -1,-1 2,-1 2,0 -1,0 material=stone\nfix x=-1,2 y=-1,0\n"
+        "block 0,0 1,0 1,4 0,4 material=rock\nzone generate edge=0.25 x=0,1 y=0,4\n"
+        "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
+        "gravity 0 -10\nsolve ratio=1e-5 cycles=100000\n");
+    f.close();
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openScript(path);
+    QVERIFY(wait_finished(w));
+    ViewOptions o;
+    o.colour = ColourBy::kSyy;
+    o.contacts = ContactShow::kOff;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const Scene scene = build_scene(*w.snapshot(), o);
+    QCOMPARE(scene.zones.size(), w.snapshot()->zones.size());
+    QVERIFY(scene.zones.size() > 100);
+    QCOMPARE(QString::fromStdString(scene.blocks_legend.title), QString("syy [MPa]"));
+    QVERIFY(scene.blocks_legend.lo < -0.07 && scene.blocks_legend.hi > -0.01);
+    const QImage img = w.view()->grabFramebuffer();
+    const auto pixel = [&](double x, double y) {
+      const QPoint p = w.view()->pixelOf({x, y});
+      const double r = img.devicePixelRatio();
+      return img.pixelColor(int(p.x() * r), int(p.y() * r));
+    };
+    const QColor foot = pixel(0.5, 0.05), top = pixel(0.5, 3.95);
+    QVERIFY2(foot.blue() > foot.red() + 80, qPrintable(foot.name()));
+    QVERIFY2(top.red() > top.blue() + 80, qPrintable(top.name()));
+    o.colour = ColourBy::kZoneState;
+    QCOMPARE(build_scene(*w.snapshot(), o).blocks_legend.entries.size(), size_t(4));
   }
 
   // Figures of the current view: PNG of the asked size, valid SVG and PDF.
