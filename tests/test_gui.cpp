@@ -13,6 +13,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "tessera/script.hpp"
 #include "tessera/ui/colour_map.hpp"
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/history_charts.hpp"
@@ -294,6 +295,81 @@ class TestGui : public QObject {
     for (size_t b = 0; b < before->blocks.size(); ++b) {
       QCOMPARE(again.snapshot()->blocks[b].x, before->blocks[b].x);
       QCOMPARE(again.snapshot()->blocks[b].y, before->blocks[b].y);
+    }
+  }
+
+  // Drawing in the view: a block (corners snapped to a block corner and to the grid) and a
+  // crack across the base, each a command in the journal; undo and redo step through them; the
+  // saved script, run headless, gives the same blocks.
+  void drawsBlocksUndoesAndRedoes() {
+    const QString path = dir_.filePath("draw.tess");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(
+        "round 0.005\nmaterial define stone density=2500\n"
+        "joint define dry kn=1e9 ks=1e9 friction=30\njoint assign dry\n"
+        "block 0,0 4,0 4,1 0,1 group=base material=stone\nfix group=base\n"
+        "block 0,1 1.9,1 1.9,3 0,3 group=left material=stone\n");
+    f.close();
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openScript(path);
+    QVERIFY(wait_finished(w));
+    w.view()->resetCamera();
+    QTest::qWait(50);
+    w.setDrawingDefaults(0.25, "top", "stone");
+    const auto click = [&](double x, double y) {
+      QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({x, y}));
+    };
+    const auto finish = [&](double x, double y) {
+      QTest::mouseDClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({x, y}));
+    };
+    w.setTool(DrawMode::kBlock);
+    click(0.02, 3.01);  // the left block's corner
+    click(1.9, 3.0);    // the other corner
+    click(1.88, 4.02);  // the grid: 2,4
+    finish(0.1, 3.9);   // the grid: 0,4
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.journal().last(), QString("block 0,3 1.9,3 2,4 0,4 group=top material=stone"));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    w.setTool(DrawMode::kCrack);
+    click(-0.2, 0.5);
+    QTest::keyClick(w.view(), Qt::Key_Escape);  // dropped: starts again
+    click(-0.2, 0.5);
+    click(4.2, 0.5);
+    QTest::keyClick(w.view(), Qt::Key_Return);
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.journal().last(), QString("crack -0.25,0.5 4.25,0.5"));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(4));
+    w.setTool(DrawMode::kNone);
+    // Undo twice, redo once: the crack is gone again, the drawn block back.
+    QVERIFY(w.canUndo());
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
+    QVERIFY(!w.canUndo() && w.canRedo());
+    w.redo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    QCOMPARE(w.journal().last(), QString("block 0,3 1.9,3 2,4 0,4 group=top material=stone"));
+    // A new command drops what was left to redo.
+    QVERIFY(w.canRedo());
+    w.runCommand("gravity 0 -9.81");
+    QVERIFY(wait_finished(w));
+    QVERIFY(!w.canRedo());
+    const QString saved = dir_.filePath("drawn.tess");
+    QVERIFY(w.saveScript(saved));
+    Interpreter batch(dir_.filePath("drawn_out").toStdString());
+    batch.run_file(saved.toStdString());
+    const Blocks& B = batch.model().blocks;
+    QCOMPARE(B.size(), w.snapshot()->blocks.size());
+    for (size_t b = 0; b < B.size(); ++b) {
+      QCOMPARE(B.x[b], w.snapshot()->blocks[b].x);
+      QCOMPARE(B.y[b], w.snapshot()->blocks[b].y);
     }
   }
 

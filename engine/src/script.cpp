@@ -162,6 +162,17 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
   }
 }
 
+SavePoint Interpreter::save_point() const {
+  return {model_,  vars_,         title_,           stages_,           summary_,
+          limits_, vtk_interval_, overlap_checked_, proceed_on_errors_};
+}
+
+void Interpreter::restore(const SavePoint& p) {
+  model_ = p.model, vars_ = p.vars, title_ = p.title, stages_ = p.stages, summary_ = p.summary;
+  limits_ = p.limits, vtk_interval_ = p.vtk_interval, overlap_checked_ = p.overlap_checked;
+  proceed_on_errors_ = p.proceed_on_errors;
+}
+
 double Interpreter::num(const std::string& text) const {
   ExprContext ctx;
   ctx.variable = [this](const std::string& name, double& v) {

@@ -43,6 +43,7 @@ MainWindow::MainWindow(QWidget* parent)
   setWindowTitle("Tessera");
   setCentralWidget(view_);
   buildActions();
+  buildEditActions();
   buildDocks();
   // The solver's thread: commands go to it queued, its log and results come back queued.
   worker_->moveToThread(&thread_);
@@ -198,6 +199,7 @@ void MainWindow::setBusy(bool b) {
   stop_action_->setEnabled(b);
   console_->input()->setEnabled(!b);
   if (!b && pause_action_->isChecked()) pause_action_->setChecked(false);
+  updateEditActions();
 }
 
 void MainWindow::openScript(const QString& path) {
@@ -221,6 +223,7 @@ void MainWindow::openScript(const QString& path) {
   updateRecent(script_path_);
   fit_next_ = true;
   running_ = "<open>";
+  undoable_.clear(), redo_.clear();
   setBusy(true);
   QMetaObject::invokeMethod(worker_, "openFile", Qt::QueuedConnection, Q_ARG(QString, script_path_),
                             Q_ARG(QString, out));
@@ -266,7 +269,21 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   running_.clear();
   progress_->hide();
   setBusy(false);
-  if (ok && !what.startsWith('<')) journal_.append(what), dirty_ = true;
+  if (ok && !what.startsWith('<')) {
+    journal_.append(what), dirty_ = true;
+    undoable_.append(what);
+    // A new command ends the redo list; a redone one moves from it.
+    if (redoing_)
+      redo_.removeLast();
+    else
+      redo_.clear();
+  }
+  if (ok && what == "<undo>" && !undoable_.isEmpty()) {
+    redo_.append(undoable_.takeLast());
+    journal_.removeLast(), dirty_ = true;
+  }
+  redoing_ = false;
+  while (undoable_.size() > undo_depth_) undoable_.removeFirst();
   // A script that failed part way: the lines after the failing one did not run; they stay in
   // the journal as comments, so saving keeps them without pretending they ran.
   if (!ok && what == "<open>") {
@@ -320,6 +337,7 @@ void MainWindow::display(std::shared_ptr<const Snapshot> s) {
   charts_->update(*shown_);
   redraw(fit_next_ && !shown_->blocks.empty());
   if (!shown_->blocks.empty()) fit_next_ = false;
+  updateEditActions();
 }
 
 void MainWindow::redraw(bool fit) {

@@ -3,12 +3,22 @@
 
 #include <QDir>
 #include <filesystem>
+#include <stdexcept>
 
 #include "tessera/script.hpp"
 #include "tessera/state_io.hpp"
 #include "tessera/ui/figure_writer.hpp"
 
 namespace tessera::ui {
+
+namespace {
+// Roughly the memory a copy of the model takes (its large arrays).
+double approx_bytes(const Model& m) {
+  return 400.0 * double(m.blocks.size()) + 150.0 * double(m.blocks.local_vertex.size()) +
+         250.0 * double(m.contacts.size()) + 120.0 * double(m.continuum.node_count()) +
+         100.0 * double(m.continuum.zone_count()) + 8.0 * double(m.histories.values.size());
+}
+}  // namespace
 
 SolverWorker::SolverWorker() {
   openFile({}, QDir::temp().filePath("tessera_out"));
@@ -60,7 +70,7 @@ void SolverWorker::observe(const Model&) {
   }
 }
 
-void SolverWorker::run(const QString& what, const std::function<void()>& body) {
+bool SolverWorker::run(const QString& what, const std::function<void()>& body) {
   stop_ = false;
   busy_ = true;
   emit started(what);
@@ -76,6 +86,7 @@ void SolverWorker::run(const QString& what, const std::function<void()>& body) {
   busy_ = false;
   publish();
   emit finished(error.isEmpty(), error);
+  return error.isEmpty();
 }
 
 void SolverWorker::openFile(const QString& path, const QString& outDir) {
@@ -87,14 +98,37 @@ void SolverWorker::openFile(const QString& path, const QString& outDir) {
   interp_->set_observer([this](const Model& m) { observe(m); });
   interp_->set_figure_sink(figure_sink());
   console_line_ = 0;
+  undo_.clear();
+  emit undoDepth(0);
   if (path.isEmpty()) return publish();
   run("open " + path, [&] { interp_->run_file(path.toStdString()); });
 }
 
 void SolverWorker::execute(const QString& line) {
+  auto before = std::make_unique<SavePoint>(interp_->save_point());
+  // Kept before `finished` is emitted, so the window may undo as soon as it hears; a stopped
+  // run counts (it changed the model, and the window journals it).
   run(line, [&] {
     emit logLine("> " + line, false);
     interp_->execute(line.toStdString(), "<console>", ++console_line_);
+    undo_.push_back(std::move(before));
+    double bytes = 0;
+    for (const auto& p : undo_) bytes += approx_bytes(p->model);
+    while (undo_.size() > kUndoDepth || (undo_.size() > 1 && bytes > kUndoBytes)) {
+      bytes -= approx_bytes(undo_.front()->model);
+      undo_.pop_front();
+    }
+    emit undoDepth(static_cast<int>(undo_.size()));
+  });
+}
+
+void SolverWorker::undo() {
+  run("undo", [&] {
+    if (undo_.empty()) throw std::runtime_error("nothing to undo");
+    interp_->restore(*undo_.back());
+    undo_.pop_back();
+    emit undoDepth(static_cast<int>(undo_.size()));
+    emit logLine("undone", false);
   });
 }
 

@@ -20,6 +20,7 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
@@ -81,8 +82,13 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   arrows_actor_->GetMapper()->ScalarVisibilityOff();
   arrows_actor_->GetProperty()->SetColor(0, 0, 0);
   arrows_actor_->GetProperty()->SetLineWidth(1.5);
+  set_direct_colours(band_actor_, band_);
+  band_actor_->GetMapper()->ScalarVisibilityOff();
+  band_actor_->GetProperty()->SetColor(0.85, 0.1, 0.1);
+  band_actor_->GetProperty()->SetLineWidth(2.0);
+  band_actor_->GetProperty()->SetPointSize(7.0);
   for (vtkActor* a : {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(),
-                      bars_actor_.Get(), arrows_actor_.Get()}) {
+                      bars_actor_.Get(), arrows_actor_.Get(), band_actor_.Get()}) {
     // A flat 2D picture: colours as given, no shading.
     a->GetProperty()->LightingOff();
     renderer_->AddActor(a);
@@ -130,6 +136,7 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->AddActor2D(title_);
   renderer_->AddActor2D(caption_);
   setMouseTracking(false);
+  setFocusPolicy(Qt::StrongFocus);
 }
 
 void VtkView::setDefaultSurfaceFormat() {
@@ -270,6 +277,77 @@ void VtkView::visibleWindow(Vec2& lo, Vec2& hi) {
   lo = a.cwiseMin(b), hi = a.cwiseMax(b);
 }
 
+void VtkView::setDrawing(DrawMode mode, double grid) {
+  drawing_.start(mode);
+  grid_ = grid;
+  setMouseTracking(mode != DrawMode::kNone);
+  setCursor(mode != DrawMode::kNone ? Qt::CrossCursor : Qt::ArrowCursor);
+  showDrawing(QPoint(-1, -1));
+}
+
+void VtkView::showDrawing(const QPoint& cursor) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines, verts;
+  std::vector<Vec2> chain = drawing_.points();
+  if (drawing_.mode() != DrawMode::kNone && cursor.x() >= 0) {
+    const Vec2 at = modelPoint(cursor);
+    const double reach = (modelPoint(cursor + QPoint(8, 0)) - at).norm();
+    chain.push_back(Drawing::snap(at, scene_, grid_, reach));
+  }
+  for (const Vec2& v : chain) {
+    const vtkIdType id = pts->InsertNextPoint(v.x(), v.y(), 0.03);
+    verts->InsertNextCell(1, &id);
+  }
+  for (vtkIdType i = 0; i + 1 < pts->GetNumberOfPoints(); ++i) {
+    const vtkIdType ids[2] = {i, i + 1};
+    lines->InsertNextCell(2, ids);
+  }
+  // A block closes back to its first point.
+  if (drawing_.mode() == DrawMode::kBlock && pts->GetNumberOfPoints() >= 3) {
+    const vtkIdType ids[2] = {pts->GetNumberOfPoints() - 1, 0};
+    lines->InsertNextCell(2, ids);
+  }
+  band_->Initialize();
+  band_->SetPoints(pts);
+  band_->SetLines(lines);
+  band_->SetVerts(verts);
+  update();
+}
+
+void VtkView::finishDrawing() {
+  if (!drawing_.complete()) return;
+  QVector<QPointF> points;
+  for (const Vec2& v : drawing_.points()) points.append(QPointF(v.x(), v.y()));
+  const DrawMode mode = drawing_.mode();
+  drawing_.start(mode);  // ready for the next shape with the same tool
+  showDrawing(QPoint(-1, -1));
+  emit drawn(mode, points);
+}
+
+void VtkView::mouseDoubleClickEvent(QMouseEvent* e) {
+  if (drawing_.mode() == DrawMode::kNone || e->button() != Qt::LeftButton)
+    return QOpenGLWidget::mouseDoubleClickEvent(e);
+  // The point under the double click (already placed if its first click was delivered: a repeat
+  // is ignored).
+  const Vec2 at = modelPoint(e->pos());
+  const double reach = (modelPoint(e->pos() + QPoint(8, 0)) - at).norm();
+  drawing_.add(Drawing::snap(at, scene_, grid_, reach));
+  finishDrawing();
+  button_ = Qt::NoButton;
+}
+
+void VtkView::keyPressEvent(QKeyEvent* e) {
+  if (drawing_.mode() != DrawMode::kNone &&
+      (e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter)) {
+    finishDrawing();
+  } else if (drawing_.mode() != DrawMode::kNone && e->key() == Qt::Key_Escape) {
+    drawing_.cancel();
+    showDrawing(QPoint(-1, -1));
+  } else {
+    QOpenGLWidget::keyPressEvent(e);
+  }
+}
+
 void VtkView::mousePressEvent(QMouseEvent* e) {
   press_ = last_ = e->pos();
   button_ = e->button();
@@ -277,7 +355,10 @@ void VtkView::mousePressEvent(QMouseEvent* e) {
 }
 
 void VtkView::mouseMoveEvent(QMouseEvent* e) {
-  if (button_ == Qt::NoButton) return;
+  if (button_ == Qt::NoButton) {
+    if (drawing_.mode() != DrawMode::kNone) showDrawing(e->pos());
+    return;
+  }
   const QPoint d = e->pos() - last_;
   if ((e->pos() - press_).manhattanLength() > 3) dragged_ = true;
   vtkCamera* cam = renderer_->GetActiveCamera();
@@ -300,6 +381,19 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void VtkView::mouseReleaseEvent(QMouseEvent* e) {
+  if (drawing_.mode() != DrawMode::kNone && !dragged_) {
+    // A click places a snapped point; a right click drops the shape.
+    if (button_ == Qt::LeftButton) {
+      const Vec2 at = modelPoint(e->pos());
+      const double reach = (modelPoint(e->pos() + QPoint(8, 0)) - at).norm();
+      drawing_.add(Drawing::snap(at, scene_, grid_, reach));
+    } else if (button_ == Qt::RightButton) {
+      drawing_.cancel();
+    }
+    showDrawing(e->pos());
+    button_ = Qt::NoButton;
+    return;
+  }
   if (!dragged_ && button_ == Qt::LeftButton && has_scene_) {
     const Vec2 p = modelPoint(e->pos());
     const int contact = bar_at(scene_, p);

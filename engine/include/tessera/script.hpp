@@ -57,6 +57,19 @@ struct StageRecord {
   bool converged = false;  // solve only
 };
 
+// What commands change in an interpreter (the model, variables, title, stages, checks, the
+// summary), kept to go back to: the GUI's undo. Output files already written stay.
+struct SavePoint {
+  Model model;
+  std::map<std::string, double> vars;
+  std::string title;
+  std::vector<StageRecord> stages;
+  RunSummary summary;
+  CheckLimits limits;
+  uint64_t vtk_interval = 0;
+  bool overlap_checked = false, proceed_on_errors = false;
+};
+
 // One command line split into words; key=value words become keys.
 struct Args {
   std::string command;
@@ -98,6 +111,9 @@ class Interpreter {
   void set_rollback(bool on) { rollback_ = on; }
   const std::vector<StageRecord>& stages() const { return stages_; }
   const std::string& title() const { return title_; }
+  // A copy of everything commands change, and a return to one.
+  SavePoint save_point() const;
+  void restore(const SavePoint& p);
 
  private:
   using Handler = void (Interpreter::*)(Args&);

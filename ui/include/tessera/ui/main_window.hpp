@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "tessera/figure.hpp"
+#include "tessera/ui/draw_tool.hpp"
 #include "tessera/ui/snapshot.hpp"
 
 class QAction;
@@ -15,6 +16,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QMenu;
 class QMessageBox;
 class QProgressBar;
@@ -46,6 +48,18 @@ class MainWindow : public QMainWindow {
   // Writes the current view as a figure (.png, .svg or .pdf) of the given size.
   void exportFigure(const QString& path, int width, int height);
   void setViewOptions(const ViewOptions& o);
+  // Undoes the newest command run in the window (not the opened script's lines), or runs the
+  // newest undone one again.
+  void undo();
+  void redo();
+  bool canUndo() const;
+  bool canRedo() const;
+  // A drawing tool in the view (kNone: off); the grid for snapping (0: none); the group and
+  // material new blocks get.
+  void setTool(DrawMode mode);
+  void setDrawingDefaults(double grid, const QString& group, const QString& material);
+  // The opened script and every command run since: what "Save script" writes.
+  const QStringList& journal() const { return journal_; }
   // Writes the opened script plus every command that ran since (a failed script's lines after
   // the error commented out): rerun in batch, it rebuilds this model.
   bool saveScript(const QString& path);
@@ -71,7 +85,10 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildActions();
+  void buildEditActions();  // edit_actions.cpp: undo, redo and the drawing toolbar
   void buildDocks();
+  void onDrawn(DrawMode mode, const QVector<QPointF>& points);
+  void updateEditActions();
   void frame();
   void display(std::shared_ptr<const Snapshot> s);
   void redraw(bool fit = false);
@@ -102,6 +119,11 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_;
   QMenu* recent_menu_;
   QAction *run_action_, *step_action_, *pause_action_, *stop_action_;
+  QAction *undo_action_ = nullptr, *redo_action_ = nullptr, *block_tool_ = nullptr,
+          *crack_tool_ = nullptr;
+  QDoubleSpinBox* grid_box_ = nullptr;
+  QLineEdit* group_edit_ = nullptr;
+  QComboBox* material_box_ = nullptr;
   ViewOptions options_;
   std::shared_ptr<const Snapshot> shown_;
   QString script_path_;
@@ -111,6 +133,11 @@ class MainWindow : public QMainWindow {
   qint64 speed_ms_ = 0;
   bool fit_next_ = true;
   bool dirty_ = false;  // commands ran since the script was opened or saved
+  // Commands that can be undone (the newest last, as many as the worker keeps save points for)
+  // and those undone, to redo (the newest undone last).
+  QStringList undoable_, redo_;
+  bool redoing_ = false;
+  int undo_depth_ = 0;  // save points the worker holds
 };
 
 }  // namespace tessera::ui

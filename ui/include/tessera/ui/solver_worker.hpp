@@ -4,12 +4,15 @@
 // The interpreter lives and runs only on this worker's thread. The window talks to it through
 // queued slots (commands) and a few thread-safe calls (snapshot request, pause, stop); it never
 // touches the model. Commands run with rollback on, so a failing one leaves the model as it was.
+// Each command that succeeds keeps a save point of the interpreter from before it, so it can be
+// undone (the newest kUndoDepth of them).
 #pragma once
 
 #include <QObject>
 #include <QString>
 #include <atomic>
 #include <condition_variable>
+#include <deque>
 #include <memory>
 #include <mutex>
 
@@ -17,7 +20,8 @@
 
 namespace tessera {
 class Interpreter;
-}
+struct SavePoint;
+}  // namespace tessera
 
 namespace tessera::ui {
 
@@ -37,12 +41,17 @@ class SolverWorker : public QObject {
   // Thread-safe: ends the running step, solve or script at the next cycle or line.
   void stop();
   bool busy() const { return busy_; }
+  // Save points kept for undo: at most this many, and this much memory (roughly) in all.
+  static constexpr size_t kUndoDepth = 50;
+  static constexpr double kUndoBytes = 1.5e9;
 
  public slots:
   // A new model from a script file; results go to `outDir`.
   void openFile(const QString& path, const QString& outDir);
-  // One line of script typed by the user.
+  // One line of script typed by the user (or made by a drawing tool or dialog).
   void execute(const QString& line);
+  // Back to the state before the newest command that can be undone (finished reports it).
+  void undo();
   // Saves the model's state (binary, for `restore`).
   void saveState(const QString& path);
 
@@ -52,9 +61,12 @@ class SolverWorker : public QObject {
   // ok false: `error` names the file, line and fault; the model is as before the command.
   void finished(bool ok, const QString& error);
   void snapshotReady();
+  // How many commands can be undone now (emitted before `finished`).
+  void undoDepth(int depth);
 
  private:
-  void run(const QString& what, const std::function<void()>& body);
+  // Runs body as one command; true if it succeeded.
+  bool run(const QString& what, const std::function<void()>& body);
   void publish();
   void observe(const Model& m);
 
@@ -63,6 +75,7 @@ class SolverWorker : public QObject {
   std::mutex mutex_;  // guards latest_ and the pause wait
   std::condition_variable resume_;
   std::shared_ptr<const Snapshot> latest_;
+  std::deque<std::unique_ptr<SavePoint>> undo_;
   uint64_t serial_ = 0;
   int console_line_ = 0;
 };

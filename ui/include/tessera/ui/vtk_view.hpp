@@ -3,7 +3,9 @@
 // Debian's VTK Qt module is built for Qt5, so VTK is embedded by hand: a
 // vtkGenericOpenGLRenderWindow that draws into the widget's context (the recipe in
 // shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the camera (for 3D
-// models), a click picks the block or contact under the cursor.
+// models), a click picks the block or contact under the cursor. With a drawing tool on, clicks
+// place snapped points (a rubber band shows the shape), a double click or Enter finishes the
+// shape, Escape or a right click drops it.
 #pragma once
 
 #include <vtkNew.h>
@@ -11,6 +13,7 @@
 
 #include <QOpenGLWidget>
 
+#include "tessera/ui/draw_tool.hpp"
 #include "tessera/ui/scene.hpp"
 
 class vtkActor;
@@ -42,9 +45,16 @@ class VtkView : public QOpenGLWidget {
   QPoint pixelOf(Vec2 p);
   // The model window the camera shows now, for figures of the current view.
   void visibleWindow(Vec2& lo, Vec2& hi);
+  // Turns a drawing tool on (kNone: off), snapping to a grid of this spacing (0: none) and to
+  // block vertices within 8 pixels.
+  void setDrawing(DrawMode mode, double grid);
+  const Drawing& drawing() const { return drawing_; }
 
  signals:
   void picked(int block, int contact);
+  // A finished shape, as the script command that makes it (group and material added by the
+  // window).
+  void drawn(DrawMode mode, const QVector<QPointF>& points);
 
  protected:
   void initializeGL() override;
@@ -54,14 +64,20 @@ class VtkView : public QOpenGLWidget {
   void mouseMoveEvent(QMouseEvent* e) override;
   void mouseReleaseEvent(QMouseEvent* e) override;
   void wheelEvent(QWheelEvent* e) override;
+  void mouseDoubleClickEvent(QMouseEvent* e) override;
+  void keyPressEvent(QKeyEvent* e) override;
 
  private:
   void rebuild();
+  // The rubber band: the drawn points and the cursor.
+  void showDrawing(const QPoint& cursor);
+  void finishDrawing();
 
   vtkNew<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
-  vtkNew<vtkPolyData> blocks_, zones_, edges_, bars_, arrows_;
-  vtkNew<vtkActor> blocks_actor_, zones_actor_, edges_actor_, bars_actor_, arrows_actor_;
+  vtkNew<vtkPolyData> blocks_, zones_, edges_, bars_, arrows_, band_;
+  vtkNew<vtkActor> blocks_actor_, zones_actor_, edges_actor_, bars_actor_, arrows_actor_,
+      band_actor_;
   vtkNew<vtkScalarBarActor> scalar_bar_;
   vtkNew<vtkLegendScaleActor> scale_;
   vtkNew<vtkTextActor> title_, caption_;
@@ -70,6 +86,8 @@ class VtkView : public QOpenGLWidget {
   QPoint press_, last_;
   Qt::MouseButton button_ = Qt::NoButton;
   bool dragged_ = false;
+  Drawing drawing_;
+  double grid_ = 0;
 };
 
 }  // namespace tessera::ui
