@@ -20,6 +20,7 @@
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/model_tree.hpp"
 #include "tessera/ui/scene.hpp"
+#include "tessera/ui/stage_panel.hpp"
 #include "tessera/ui/vtk_view.hpp"
 
 using namespace tessera;
@@ -371,6 +372,54 @@ class TestGui : public QObject {
       QCOMPARE(B.x[b], w.snapshot()->blocks[b].x);
       QCOMPARE(B.y[b], w.snapshot()->blocks[b].y);
     }
+  }
+
+  // A two-stage sequence from the stage list: each stage's commands and solve run in order and
+  // its results are kept; a finished stage can be shown again and exported; a failing stage
+  // stops the run and is marked.
+  void runsAnExcavationSequence() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    PlannedStage remove;
+    remove.name = "remove the right block";
+    remove.commands = QStringList{"delete group=right"};
+    remove.ratio = 1e-4, remove.cycles = 20000;
+    PlannedStage prop = remove;
+    prop.name = "prop";
+    prop.commands = QStringList{"block 2.1,1 4,1 4,2 2.1,2 group=prop material=stone"};
+    w.stagePanel()->addStage(remove);
+    w.stagePanel()->addStage(prop);
+    QSignalSpy done(&w, &MainWindow::stagesFinished);
+    w.runStages();
+    QVERIFY(done.wait(60000));
+    QCOMPARE(done.takeFirst().at(0).toBool(), true);
+    const auto& stages = w.stagePanel()->stages();
+    QVERIFY(stages[0].state == PlannedStage::State::kDone && stages[0].result);
+    QVERIFY(stages[1].state == PlannedStage::State::kDone && stages[1].result);
+    QCOMPARE(stages[0].result->blocks.size(), size_t(2));
+    QCOMPARE(stages[1].result->blocks.size(), size_t(3));
+    QVERIFY(stages[1].result->cycle > stages[0].result->cycle);
+    QVERIFY(w.journal().contains("delete group=right"));
+    QVERIFY(w.journal().contains("solve ratio=0.0001 cycles=20000"));
+    // Back to the first stage's picture, and a figure of each stage.
+    w.showStageResult(0);
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
+    const QString out = dir_.filePath("stages");
+    QCOMPARE(w.exportStages(out, 400, 300), 2);
+    QCOMPARE(QImage(out + "/stage_02.png").size(), QSize(400, 300));
+    // A stage that fails is marked; the finished ones are not run again.
+    PlannedStage bad = remove;
+    bad.name = "typo";
+    bad.commands = QStringList{"delete group=rigth"};
+    w.stagePanel()->addStage(bad);
+    w.runStages();
+    QVERIFY(done.wait(60000));
+    QCOMPARE(done.takeFirst().at(0).toBool(), false);
+    QVERIFY(stages[2].state == PlannedStage::State::kFailed);
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
   }
 
   // A bad command and a diverging run: an error in the console and a message, the model as

@@ -45,6 +45,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildActions();
   buildEditActions();
   buildDocks();
+  buildStageDock();
   // The solver's thread: commands go to it queued, its log and results come back queued.
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
@@ -257,7 +258,10 @@ void MainWindow::stopRun() {
 }
 
 void MainWindow::onStarted(const QString& what) {
-  statusBar()->showMessage("running: " + what);
+  statusBar()->showMessage(stage_running_ >= 0
+                               ? QString::fromStdString(stageTitle(stage_running_)) +
+                                     " - running: " + what
+                               : "running: " + what);
   progress_->setRange(0, 0);  // busy indicator
   progress_->show();
   speed_cycle_ = step_from_ = shown_ ? shown_->cycle : 0;
@@ -305,6 +309,7 @@ void MainWindow::onFinished(bool ok, const QString& error) {
     statusBar()->showMessage("ready");
   }
   emit commandFinished(ok);
+  if (stage_running_ >= 0 && !what.startsWith('<')) onStageLineFinished(ok);
 }
 
 void MainWindow::frame() {

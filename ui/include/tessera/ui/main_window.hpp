@@ -5,7 +5,9 @@
 #include <QMainWindow>
 #include <QThread>
 #include <QTimer>
+#include <deque>
 #include <memory>
+#include <string>
 
 #include "tessera/figure.hpp"
 #include "tessera/ui/draw_tool.hpp"
@@ -29,6 +31,7 @@ class HistoryCharts;
 class ModelTree;
 class PropertyPanel;
 class SolverWorker;
+class StagePanel;
 class VtkView;
 
 class MainWindow : public QMainWindow {
@@ -60,6 +63,13 @@ class MainWindow : public QMainWindow {
   void setDrawingDefaults(double grid, const QString& group, const QString& material);
   // The opened script and every command run since: what "Save script" writes.
   const QStringList& journal() const { return journal_; }
+  // The excavation sequence: runs the stages not yet done, in order (stagesFinished at the end);
+  // shows a finished stage's results; writes a figure of each finished stage into `dir`
+  // (stage_01.png, ...; and stages.mp4 where ffmpeg is installed), returning how many.
+  StagePanel* stagePanel() const { return stages_; }
+  void runStages();
+  void showStageResult(int stage);
+  int exportStages(const QString& dir, int width, int height);
   // Writes the opened script plus every command that ran since (a failed script's lines after
   // the error commented out): rerun in batch, it rebuilds this model.
   bool saveScript(const QString& path);
@@ -79,6 +89,8 @@ class MainWindow : public QMainWindow {
  signals:
   // A command, file or run ended (ok false: it failed and the model was kept as before).
   void commandFinished(bool ok);
+  // A run of the stage list ended (ok false: a stage failed; those after it did not run).
+  void stagesFinished(bool ok);
 
  protected:
   void closeEvent(QCloseEvent* e) override;
@@ -89,6 +101,10 @@ class MainWindow : public QMainWindow {
   void buildDocks();
   void onDrawn(DrawMode mode, const QVector<QPointF>& points);
   void updateEditActions();
+  void buildStageDock();  // stage_runs.cpp
+  void runNextStageLine();
+  void onStageLineFinished(bool ok);
+  std::string stageTitle(int stage) const;
   void frame();
   void display(std::shared_ptr<const Snapshot> s);
   void redraw(bool fit = false);
@@ -137,6 +153,16 @@ class MainWindow : public QMainWindow {
   // and those undone, to redo (the newest undone last).
   QStringList undoable_, redo_;
   bool redoing_ = false;
+  // The stage run: lines still to run (each with its stage, and whether it ends the stage).
+  struct StageLine {
+    int stage = -1;
+    QString line;
+    bool last = false;
+  };
+  StagePanel* stages_ = nullptr;
+  std::deque<StageLine> stage_queue_;
+  int stage_running_ = -1;
+  bool stage_last_ = false;
   int undo_depth_ = 0;  // save points the worker holds
 };
 
