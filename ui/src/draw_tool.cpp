@@ -16,7 +16,7 @@ std::string coordinate(double v) {
 }  // namespace
 
 void Drawing::add(Vec2 p) {
-  if (mode_ == DrawMode::kNone) return;
+  if (mode_ == DrawMode::kNone || mode_ == DrawMode::kSelect) return;
   if (!points_.empty() && (points_.back() - p).norm() == 0.0) return;
   points_.push_back(p);
 }
@@ -26,7 +26,7 @@ bool Drawing::complete() const {
 }
 
 std::string Drawing::command(const std::string& group, const std::string& material) const {
-  if (!complete() || mode_ == DrawMode::kNone) return {};
+  if (!complete() || mode_ == DrawMode::kNone || mode_ == DrawMode::kSelect) return {};
   std::string out = mode_ == DrawMode::kBlock ? "block" : "crack";
   // Appended piece by piece (GCC 12 warns falsely on " " + std::string temporaries).
   for (const Vec2& p : points_) {

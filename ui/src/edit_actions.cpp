@@ -24,19 +24,22 @@ void MainWindow::buildEditActions() {
   bar->setObjectName("draw_toolbar");
   auto* tools = new QActionGroup(this);
   tools->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+  select_tool_ = bar->addAction("Select");
+  select_tool_->setToolTip("Select blocks: click one, or drag a box around their centroids");
   block_tool_ = bar->addAction("Block");
   block_tool_->setToolTip("Draw a block: click its corners, double-click or Enter to finish");
   crack_tool_ = bar->addAction("Crack");
   crack_tool_->setToolTip("Draw a crack: click its points, double-click or Enter to cut");
-  for (QAction* a : {block_tool_, crack_tool_}) {
+  for (QAction* a : {select_tool_, block_tool_, crack_tool_}) {
     a->setCheckable(true);
     tools->addAction(a);
     edit->addAction(a);
   }
   connect(tools, &QActionGroup::triggered, this, [this](QAction*) {
-    setTool(block_tool_->isChecked()   ? DrawMode::kBlock
-            : crack_tool_->isChecked() ? DrawMode::kCrack
-                                       : DrawMode::kNone);
+    setTool(block_tool_->isChecked()    ? DrawMode::kBlock
+            : crack_tool_->isChecked()  ? DrawMode::kCrack
+            : select_tool_->isChecked() ? DrawMode::kSelect
+                                        : DrawMode::kNone);
   });
   bar->addWidget(new QLabel(" Grid ", bar));
   grid_box_ = new QDoubleSpinBox(bar);
@@ -63,6 +66,7 @@ void MainWindow::buildEditActions() {
 }
 
 void MainWindow::setTool(DrawMode mode) {
+  select_tool_->setChecked(mode == DrawMode::kSelect);
   block_tool_->setChecked(mode == DrawMode::kBlock);
   crack_tool_->setChecked(mode == DrawMode::kCrack);
   view_->setDrawing(mode, grid_box_->value());

@@ -46,6 +46,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildEditActions();
   buildDocks();
   buildStageDock();
+  buildModelMenu();
   // The solver's thread: commands go to it queued, its log and results come back queued.
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
@@ -310,6 +311,11 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   }
   emit commandFinished(ok);
   if (stage_running_ >= 0 && !what.startsWith('<')) onStageLineFinished(ok);
+  if (!ok) pending_.clear();
+  if (!pending_.isEmpty() && stage_running_ < 0)
+    QTimer::singleShot(0, this, [this] {
+      if (!pending_.isEmpty() && !busy()) runCommand(pending_.takeFirst());
+    });
 }
 
 void MainWindow::frame() {

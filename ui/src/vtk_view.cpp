@@ -24,6 +24,7 @@
 #include <QMouseEvent>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 namespace tessera::ui {
@@ -47,6 +48,20 @@ void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
   pd->SetPoints(points);
   pd->SetPolys(cells);
   pd->GetCellData()->SetScalars(rgb);
+}
+
+// Line segments as a polydata of line cells, just above the model.
+void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec2, 2>>& segments) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  for (const auto& s : segments) {
+    const vtkIdType ids[2] = {pts->InsertNextPoint(s[0].x(), s[0].y(), 0.025),
+                              pts->InsertNextPoint(s[1].x(), s[1].y(), 0.025)};
+    lines->InsertNextCell(2, ids);
+  }
+  pd->Initialize();
+  pd->SetPoints(pts);
+  pd->SetLines(lines);
 }
 
 void set_direct_colours(vtkActor* actor, vtkPolyData* pd) {
@@ -87,8 +102,17 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   band_actor_->GetProperty()->SetColor(0.85, 0.1, 0.1);
   band_actor_->GetProperty()->SetLineWidth(2.0);
   band_actor_->GetProperty()->SetPointSize(7.0);
-  for (vtkActor* a : {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(),
-                      bars_actor_.Get(), arrows_actor_.Get(), band_actor_.Get()}) {
+  set_direct_colours(preview_actor_, preview_);
+  preview_actor_->GetMapper()->ScalarVisibilityOff();
+  preview_actor_->GetProperty()->SetColor(0.1, 0.3, 0.9);
+  preview_actor_->GetProperty()->SetLineWidth(1.5);
+  set_direct_colours(highlight_actor_, highlight_);
+  highlight_actor_->GetMapper()->ScalarVisibilityOff();
+  highlight_actor_->GetProperty()->SetColor(1.0, 0.55, 0.0);
+  highlight_actor_->GetProperty()->SetLineWidth(3.0);
+  for (vtkActor* a :
+       {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(), bars_actor_.Get(),
+        arrows_actor_.Get(), band_actor_.Get(), preview_actor_.Get(), highlight_actor_.Get()}) {
     // A flat 2D picture: colours as given, no shading.
     a->GetProperty()->LightingOff();
     renderer_->AddActor(a);
@@ -187,6 +211,13 @@ void VtkView::rebuild() {
   fill_polygons(blocks_, polys, colours, 0.0);
   // Block outlines above the zones, which sit above the block fills.
   fill_polygons(edges_, polys, colours, 0.006);
+  std::vector<std::array<Vec2, 2>> outline;
+  for (const auto& p : scene_.polygons)
+    if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
+        highlight_blocks_.end())
+      for (size_t k = 0; k < p.points.size(); ++k)
+        outline.push_back({p.points[k], p.points[(k + 1) % p.points.size()]});
+  fill_lines(highlight_, outline);
   polys.clear(), colours.clear();
   for (const auto& p : scene_.zones) polys.push_back(p.points), colours.push_back(p.colour);
   fill_polygons(zones_, polys, colours, 0.003);
@@ -280,16 +311,30 @@ void VtkView::visibleWindow(Vec2& lo, Vec2& hi) {
 void VtkView::setDrawing(DrawMode mode, double grid) {
   drawing_.start(mode);
   grid_ = grid;
-  setMouseTracking(mode != DrawMode::kNone);
+  const bool shapes = mode == DrawMode::kBlock || mode == DrawMode::kCrack;
+  setMouseTracking(shapes);
   setCursor(mode != DrawMode::kNone ? Qt::CrossCursor : Qt::ArrowCursor);
   showDrawing(QPoint(-1, -1));
+}
+
+void VtkView::setPreview(const std::vector<std::array<Vec2, 2>>& segments) {
+  fill_lines(preview_, segments);
+  preview_count_ = segments.size();
+  update();
+}
+
+void VtkView::setHighlight(const std::vector<int>& blocks) {
+  highlight_blocks_ = blocks;
+  rebuild();
+  update();
 }
 
 void VtkView::showDrawing(const QPoint& cursor) {
   vtkNew<vtkPoints> pts;
   vtkNew<vtkCellArray> lines, verts;
   std::vector<Vec2> chain = drawing_.points();
-  if (drawing_.mode() != DrawMode::kNone && cursor.x() >= 0) {
+  const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
+  if (shapes && cursor.x() >= 0) {
     const Vec2 at = modelPoint(cursor);
     const double reach = (modelPoint(cursor + QPoint(8, 0)) - at).norm();
     chain.push_back(Drawing::snap(at, scene_, grid_, reach));
@@ -325,8 +370,8 @@ void VtkView::finishDrawing() {
 }
 
 void VtkView::mouseDoubleClickEvent(QMouseEvent* e) {
-  if (drawing_.mode() == DrawMode::kNone || e->button() != Qt::LeftButton)
-    return QOpenGLWidget::mouseDoubleClickEvent(e);
+  const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
+  if (!shapes || e->button() != Qt::LeftButton) return QOpenGLWidget::mouseDoubleClickEvent(e);
   // The point under the double click (already placed if its first click was delivered: a repeat
   // is ignored).
   const Vec2 at = modelPoint(e->pos());
@@ -337,10 +382,10 @@ void VtkView::mouseDoubleClickEvent(QMouseEvent* e) {
 }
 
 void VtkView::keyPressEvent(QKeyEvent* e) {
-  if (drawing_.mode() != DrawMode::kNone &&
-      (e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter)) {
+  const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
+  if (shapes && (e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter)) {
     finishDrawing();
-  } else if (drawing_.mode() != DrawMode::kNone && e->key() == Qt::Key_Escape) {
+  } else if (shapes && e->key() == Qt::Key_Escape) {
     drawing_.cancel();
     showDrawing(QPoint(-1, -1));
   } else {
@@ -362,7 +407,14 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
   const QPoint d = e->pos() - last_;
   if ((e->pos() - press_).manhattanLength() > 3) dragged_ = true;
   vtkCamera* cam = renderer_->GetActiveCamera();
-  if (button_ == Qt::LeftButton) {
+  if (button_ == Qt::LeftButton && drawing_.mode() == DrawMode::kSelect) {
+    // The selection box, corner to corner.
+    const Vec2 a = modelPoint(press_), b = modelPoint(e->pos());
+    fill_lines(band_, {{{a, Vec2(b.x(), a.y())}},
+                       {{Vec2(b.x(), a.y()), b}},
+                       {{b, Vec2(a.x(), b.y())}},
+                       {{Vec2(a.x(), b.y()), a}}});
+  } else if (button_ == Qt::LeftButton || button_ == Qt::MiddleButton) {
     // Pan: move the camera by the model distance the cursor moved.
     const Vec2 a = modelPoint(last_), b = modelPoint(e->pos());
     const Vec2 shift = a - b;
@@ -381,7 +433,17 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void VtkView::mouseReleaseEvent(QMouseEvent* e) {
-  if (drawing_.mode() != DrawMode::kNone && !dragged_) {
+  if (drawing_.mode() == DrawMode::kSelect && button_ == Qt::LeftButton && dragged_) {
+    const Vec2 a = modelPoint(press_), b = modelPoint(e->pos());
+    fill_lines(band_, {});
+    button_ = Qt::NoButton;
+    update();
+    emit boxSelected(QPointF(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
+                     QPointF(std::max(a.x(), b.x()), std::max(a.y(), b.y())));
+    return;
+  }
+  const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
+  if (shapes && !dragged_) {
     // A click places a snapped point; a right click drops the shape.
     if (button_ == Qt::LeftButton) {
       const Vec2 at = modelPoint(e->pos());

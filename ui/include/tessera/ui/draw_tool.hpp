@@ -10,7 +10,8 @@
 
 namespace tessera::ui {
 
-enum class DrawMode { kNone, kBlock, kCrack };
+// kSelect: a click picks a block, a drag selects the blocks whose centroid is in the box.
+enum class DrawMode { kNone, kBlock, kCrack, kSelect };
 
 class Drawing {
  public:

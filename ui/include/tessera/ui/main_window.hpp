@@ -32,6 +32,7 @@ class ModelTree;
 class PropertyPanel;
 class SolverWorker;
 class StagePanel;
+class CommandDialog;
 class VtkView;
 
 class MainWindow : public QMainWindow {
@@ -67,6 +68,17 @@ class MainWindow : public QMainWindow {
   // shows a finished stage's results; writes a figure of each finished stage into `dir`
   // (stage_01.png, ...; and stages.mp4 where ffmpeg is installed), returning how many.
   StagePanel* stagePanel() const { return stages_; }
+  // The selection (select tool: a click picks a block, a drag a box) as script selection
+  // keywords ("block=3", "x=0,2 y=1,4"; empty: none), and the blocks it holds now.
+  QString selection() const { return selection_; }
+  const std::vector<int>& selectedBlocks() const { return selected_; }
+  void selectBox(Vec2 lo, Vec2 hi);
+  void selectBlock(int block);
+  // Opens one of the Model menu's dialogs by name ("material", "joint", "jset", "tunnel",
+  // "voronoi", "wall", "arch", "zones", "assign", "boundary", "insitu"); OK runs its commands.
+  CommandDialog* openDialog(const QString& name);
+  // Runs lines one after another as commands; stops at the first that fails.
+  void runCommands(const QStringList& lines);
   void runStages();
   void showStageResult(int stage);
   int exportStages(const QString& dir, int width, int height);
@@ -105,6 +117,8 @@ class MainWindow : public QMainWindow {
   void runNextStageLine();
   void onStageLineFinished(bool ok);
   std::string stageTitle(int stage) const;
+  void buildModelMenu();  // model_dialogs.cpp
+  void previewJointSet(const CommandDialog& d);
   void frame();
   void display(std::shared_ptr<const Snapshot> s);
   void redraw(bool fit = false);
@@ -160,6 +174,10 @@ class MainWindow : public QMainWindow {
     bool last = false;
   };
   StagePanel* stages_ = nullptr;
+  QAction* select_tool_ = nullptr;
+  QString selection_;
+  std::vector<int> selected_;
+  QStringList pending_;  // runCommands' lines still to run
   std::deque<StageLine> stage_queue_;
   int stage_running_ = -1;
   bool stage_last_ = false;

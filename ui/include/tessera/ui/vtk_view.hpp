@@ -5,13 +5,16 @@
 // shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the camera (for 3D
 // models), a click picks the block or contact under the cursor. With a drawing tool on, clicks
 // place snapped points (a rubber band shows the shape), a double click or Enter finishes the
-// shape, Escape or a right click drops it.
+// shape, Escape or a right click drops it. With the select tool, a left drag draws a box (the
+// middle button pans in every mode).
 #pragma once
 
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
 #include <QOpenGLWidget>
+#include <array>
+#include <vector>
 
 #include "tessera/ui/draw_tool.hpp"
 #include "tessera/ui/scene.hpp"
@@ -49,12 +52,19 @@ class VtkView : public QOpenGLWidget {
   // block vertices within 8 pixels.
   void setDrawing(DrawMode mode, double grid);
   const Drawing& drawing() const { return drawing_; }
+  // Lines drawn over the model to preview a cut before it is made (empty: none).
+  void setPreview(const std::vector<std::array<Vec2, 2>>& segments);
+  size_t previewSegments() const { return preview_count_; }
+  // Blocks (scene indices) outlined as selected.
+  void setHighlight(const std::vector<int>& blocks);
 
  signals:
   void picked(int block, int contact);
   // A finished shape, as the script command that makes it (group and material added by the
   // window).
   void drawn(DrawMode mode, const QVector<QPointF>& points);
+  // The select tool's box, in model coordinates.
+  void boxSelected(QPointF lo, QPointF hi);
 
  protected:
   void initializeGL() override;
@@ -75,9 +85,11 @@ class VtkView : public QOpenGLWidget {
 
   vtkNew<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
-  vtkNew<vtkPolyData> blocks_, zones_, edges_, bars_, arrows_, band_;
+  vtkNew<vtkPolyData> blocks_, zones_, edges_, bars_, arrows_, band_, preview_, highlight_;
   vtkNew<vtkActor> blocks_actor_, zones_actor_, edges_actor_, bars_actor_, arrows_actor_,
-      band_actor_;
+      band_actor_, preview_actor_, highlight_actor_;
+  std::vector<int> highlight_blocks_;
+  size_t preview_count_ = 0;
   vtkNew<vtkScalarBarActor> scalar_bar_;
   vtkNew<vtkLegendScaleActor> scale_;
   vtkNew<vtkTextActor> title_, caption_;

@@ -1,0 +1,264 @@
+// The Model menu: dialogs that write commands (materials, joints, joint sets with a preview of
+// the cut, openings, generators, zoning, assignments to the selection, boundary conditions,
+// in-situ stress), and the selection they act on.
+#include <QAction>
+#include <QMenuBar>
+#include <QStatusBar>
+
+#include "tessera/generators.hpp"
+#include "tessera/ui/command_dialog.hpp"
+#include "tessera/ui/console_widget.hpp"
+#include "tessera/ui/main_window.hpp"
+#include "tessera/ui/vtk_view.hpp"
+
+namespace tessera::ui {
+
+namespace {
+QString num(double v) {
+  return QString::number(v, 'g', 6);
+}
+
+// The fields of each dialog: keyword, label, unit, initial value, tip.
+struct DialogSpec {
+  QString title, head;
+  std::vector<CommandField> fields;
+  bool on_selection = false;  // the selection's keywords are appended
+};
+
+DialogSpec spec(const QString& name) {
+  const QString msd = "a mean, or mean,sd for a normal spread";
+  if (name == "material")
+    return {"Material",
+            "material define",
+            {{"#name", "Name", "", "rock", "the name scripts and assignments use"},
+             {"density", "Density", "kg/m³", "2600", ""},
+             {"E", "Young's modulus", "Pa", "", "deformable blocks only"},
+             {"nu", "Poisson's ratio", "", "", ""},
+             {"model", "Zone model", "", "", "elastic, mohr-coulomb, drucker-prager or null"},
+             {"friction", "Friction angle", "deg", "", ""},
+             {"cohesion", "Cohesion", "Pa", "", ""},
+             {"tension", "Tensile strength", "Pa", "", ""},
+             {"dilation", "Dilation angle", "deg", "", ""}}};
+  if (name == "joint")
+    return {"Joint properties",
+            "joint define",
+            {{"#name", "Name", "", "joints", ""},
+             {"kn", "Normal stiffness", "Pa/m", "1e10", ""},
+             {"ks", "Shear stiffness", "Pa/m", "1e10", ""},
+             {"friction", "Friction angle", "deg", "30", ""},
+             {"cohesion", "Cohesion", "Pa", "", ""},
+             {"tension", "Tensile strength", "Pa", "", ""},
+             {"dilation", "Dilation angle", "deg", "", ""}}};
+  if (name == "jset")
+    return {"Joint set",
+            "jset",
+            {{"angle", "Angle from x", "deg", "30", msd},
+             {"spacing", "Spacing", "m", "1", msd},
+             {"trace", "Trace length", "m", "", "empty: traces run through; " + msd},
+             {"gap", "Gap (rock bridge)", "m", "", msd},
+             {"origin", "A trace through", "x,y m", "", ""},
+             {"seed", "Random seed", "", "", ""},
+             {"!extend", "Trace ends run to block edges", "", "", ""},
+             {"name", "Name", "", "", "the joints' name for properties and selections"}},
+            true};
+  if (name == "tunnel")
+    return {"Circular opening",
+            "tunnel circle",
+            {{"centre", "Centre", "x,y m", "0,0", ""},
+             {"radius", "Radius", "m", "1", ""},
+             {"segments", "Segments", "", "24", ""},
+             {"name", "Name", "", "", ""},
+             {"group", "Group of the core", "", "tunnel", "excavate it with delete group=..."}}};
+  if (name == "voronoi")
+    return {"Voronoi cells",
+            "voronoi",
+            {{"size", "Mean cell size", "m", "0.5", ""},
+             {"seed", "Random seed", "", "", ""},
+             {"name", "Name", "", "", ""}},
+            true};
+  if (name == "wall")
+    return {"Running-bond wall",
+            "wall",
+            {{"brick", "Brick", "L,H m", "0.4,0.2", ""},
+             {"courses", "Courses", "", "10", ""},
+             {"bricks", "Bricks per course", "", "8", ""},
+             {"origin", "Bottom left", "x,y m", "0,0", ""},
+             {"group", "Group", "", "wall", ""},
+             {"material", "Material", "", "", ""}}};
+  if (name == "arch")
+    return {"Arch",
+            "arch",
+            {{"centre", "Centre of the intrados", "x,y m", "0,0", ""},
+             {"radius", "Intrados radius", "m", "2", ""},
+             {"thickness", "Ring thickness", "m", "0.3", ""},
+             {"voussoirs", "Voussoirs", "", "15", ""},
+             {"half_angle", "Half angle", "deg", "90", "90: semicircular"},
+             {"abutment", "Abutment height", "m", "", ""},
+             {"group", "Group", "", "arch", ""},
+             {"material", "Material", "", "", ""}}};
+  if (name == "zones")
+    return {"Zones (deformable blocks)",
+            "zone generate",
+            {{"edge", "Zone edge", "m", "0.5", ""},
+             {"fine", "Finer edge near a point", "m", "", ""},
+             {"near", "Near", "x,y m", "", ""},
+             {"radius", "Within", "m", "", ""},
+             {"growth", "Growth away from it", "", "", "e.g. 0.3"}},
+            true};
+  if (name == "boundary")
+    return {"Boundary condition on nodes",
+            "boundary",
+            {{"fix", "Fix", "x, y or xy", "", ""},
+             {"stress", "Applied stress", "SXX,SYY,SXY Pa", "", "tension positive"},
+             {"pressure", "Pressure", "Pa", "", ""},
+             {"joints", "Along joints named", "", "", "e.g. the opening's name"}},
+            true};
+  if (name == "insitu")
+    return {"In-situ stress",
+            "insitu",
+            {{"stress", "Stress", "SXX,SYY,SXY Pa", "-5e6,-10e6,0", "tension positive"},
+             {"szz", "Out of plane", "Pa", "", "empty: nu (sxx + syy)"},
+             {"ygradient", "Gradient with height", "Pa/m", "", "e.g. k rho g, rho g, 0"},
+             {"y0", "Height of the given stress", "m", "", ""}}};
+  if (name == "assign")
+    return {
+        "Assign to the selection",
+        "",
+        {{"group", "Group", "", "", "puts the selected blocks into this group"},
+         {"material", "Material", "", "", "gives them this material"},
+         {"joint", "Joint properties", "", "", "between the selected blocks (needs the group)"}}};
+  return {};
+}
+}  // namespace
+
+void MainWindow::buildModelMenu() {
+  QMenu* model = menuBar()->addMenu("&Model");
+  const std::pair<const char*, const char*> items[] = {{"material", "&Material…"},
+                                                       {"joint", "&Joint properties…"},
+                                                       {"jset", "Joint &set…"},
+                                                       {"tunnel", "&Opening…"},
+                                                       {"voronoi", "&Voronoi cells…"},
+                                                       {"wall", "&Wall…"},
+                                                       {"arch", "&Arch…"},
+                                                       {"zones", "&Zones…"},
+                                                       {"assign", "Assign to selection…"},
+                                                       {"boundary", "&Boundary…"},
+                                                       {"insitu", "&In-situ stress…"}};
+  for (const auto& [name, text] : items) {
+    if (QString(name) == "assign") model->addSeparator();
+    const QString key = name;
+    model->addAction(text, this, [this, key] { openDialog(key); });
+  }
+  model->addAction("&Fix selection", this, [this] {
+    if (selection_.isEmpty()) return console_->append("select blocks first", true);
+    runCommand("fix " + selection_);
+  });
+  connect(view_, &VtkView::boxSelected, this, [this](QPointF lo, QPointF hi) {
+    selectBox({lo.x(), lo.y()}, {hi.x(), hi.y()});
+  });
+  connect(view_, &VtkView::picked, this, [this](int block, int) {
+    if (view_->drawing().mode() == DrawMode::kSelect) selectBlock(block);
+  });
+}
+
+void MainWindow::selectBox(Vec2 lo, Vec2 hi) {
+  selection_ = QString("x=%1,%2 y=%3,%4").arg(num(lo.x()), num(hi.x()), num(lo.y()), num(hi.y()));
+  selected_.clear();
+  if (shown_)
+    for (size_t b = 0; b < shown_->blocks.size(); ++b) {
+      const SnapshotBlock& s = shown_->blocks[b];
+      if (s.x >= lo.x() && s.x <= hi.x() && s.y >= lo.y() && s.y <= hi.y())
+        selected_.push_back(static_cast<int>(b));
+    }
+  view_->setHighlight(selected_);
+  statusBar()->showMessage(
+      QString("%1 block(s) selected: %2").arg(selected_.size()).arg(selection_));
+}
+
+void MainWindow::selectBlock(int block) {
+  selected_.clear();
+  selection_.clear();
+  if (shown_ && block >= 0) {
+    selected_.push_back(block);
+    selection_ = QString("block=%1").arg(shown_->blocks[size_t(block)].id);
+  }
+  view_->setHighlight(selected_);
+  statusBar()->showMessage(selection_.isEmpty() ? "nothing selected" : "selected " + selection_);
+}
+
+void MainWindow::runCommands(const QStringList& lines) {
+  if (lines.isEmpty() || busy()) return;
+  pending_ = lines;
+  runCommand(pending_.takeFirst());
+}
+
+CommandDialog* MainWindow::openDialog(const QString& name) {
+  const DialogSpec s = spec(name);
+  if (s.title.isEmpty()) return nullptr;
+  auto* d = new CommandDialog(s.title, s.head, s.fields, this);
+  d->setAttribute(Qt::WA_DeleteOnClose);
+  if (s.on_selection) d->setTail(selection_);
+  if (name == "jset") {
+    connect(d, &CommandDialog::changed, this, [this, d] { previewJointSet(*d); });
+    connect(d, &QDialog::finished, this, [this] { view_->setPreview({}); });
+    previewJointSet(*d);
+  }
+  connect(d, &QDialog::accepted, this, [this, d, name] {
+    if (name != "assign") return runCommand(d->command());
+    // Assignments: one command each, in order.
+    if (selection_.isEmpty()) return console_->append("select blocks first", true);
+    QStringList lines;
+    const QString group = d->value("group"), material = d->value("material"),
+                  joint = d->value("joint");
+    if (!group.isEmpty()) lines << "group " + group + " " + selection_;
+    if (!material.isEmpty()) lines << "material assign " + material + " " + selection_;
+    if (!joint.isEmpty() && !group.isEmpty())
+      lines << "joint assign " + joint + " groups=" + group + "," + group;
+    if (!joint.isEmpty() && group.isEmpty())
+      console_->append("joint properties for a selection need a group to name it", true);
+    runCommands(lines);
+  });
+  d->open();
+  return d;
+}
+
+void MainWindow::previewJointSet(const CommandDialog& d) {
+  // The traces the command would cut, over the box of the blocks it acts on.
+  if (!shown_ || shown_->blocks.empty()) return view_->setPreview({});
+  auto pair = [](const QString& text, double& a, double& b) {
+    const QStringList parts = text.split(',');
+    bool ok = !text.isEmpty();
+    a = parts.value(0).toDouble(&ok);
+    b = parts.size() > 1 ? parts[1].toDouble() : 0.0;
+    return ok;
+  };
+  JointSetSpec j;
+  if (!pair(d.value("angle"), j.angle, j.angle_sd) ||
+      !pair(d.value("spacing"), j.spacing, j.spacing_sd) || j.spacing <= 0)
+    return view_->setPreview({});
+  pair(d.value("trace"), j.trace, j.trace_sd);
+  pair(d.value("gap"), j.gap, j.gap_sd);
+  double ox = 0, oy = 0;
+  if (pair(d.value("origin"), ox, oy)) j.origin = {ox, oy};
+  if (!d.value("seed").isEmpty()) j.seed = d.value("seed").toULongLong();
+  Vec2 lo = shown_->lo, hi = shown_->hi;
+  if (!selected_.empty()) {
+    lo = Vec2(1e300, 1e300), hi = -lo;
+    for (int b : selected_) {
+      const SnapshotBlock& blk = shown_->blocks[size_t(b)];
+      for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v) {
+        const Vec2 p = shown_vertex(*shown_, blk, v, 1.0);
+        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      }
+    }
+  }
+  // Many thousands of traces would only blacken the view.
+  if ((hi - lo).norm() / j.spacing > 5000) return view_->setPreview({});
+  std::vector<std::array<Vec2, 2>> lines;
+  for (const CutLine& c : joint_set_traces(j, lo, hi, -1))
+    for (size_t k = 0; k + 1 < c.points.size(); ++k)
+      lines.push_back({c.points[k], c.points[k + 1]});
+  view_->setPreview(lines);
+}
+
+}  // namespace tessera::ui
