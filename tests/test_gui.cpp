@@ -432,7 +432,8 @@ class TestGui : public QObject {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(
-        "round 0.01\nmaterial define rock density=2600\nmaterial define soft density=2000\n"
+        "round 0.01\nmaterial define rock density=2600 E=10e9 nu=0.25\n"
+        "material define soft density=2000 E=1e9 nu=0.3\n"
         "joint define joints kn=1e10 ks=1e10 friction=30\n"
         "joint define glue kn=1e10 ks=1e10 friction=40 cohesion=1e6 tension=1e6\n"
         "joint assign joints\nregion 0,0 10,6 group=rock material=rock\n");
@@ -478,6 +479,13 @@ class TestGui : public QObject {
     d->accept();
     QTRY_VERIFY_WITH_TIMEOUT(!w.busy() && w.journal().last().startsWith("joint assign"), 20000);
     QCOMPARE(w.journal().last(), QString("joint assign glue groups=upper,upper"));
+    // The selected blocks zoned through the Zones dialog (it acts on the selection).
+    d = w.openDialog("zones");
+    d->setValue("edge", "1");
+    QVERIFY(d->command().startsWith("zone generate edge=1 x="));
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QVERIFY(w.snapshot()->zones.size() > 20);
     const Snapshot& s = *w.snapshot();
     const auto& groups = s.groups;
     int upper = 0;
@@ -495,12 +503,14 @@ class TestGui : public QObject {
     batch.run_file(saved.toStdString());
     const Model& m = batch.model();
     QCOMPARE(m.blocks.size(), s.blocks.size());
+    QCOMPARE(m.continuum.zone_count(), s.zones.size());
     for (size_t b = 0; b < m.blocks.size(); ++b) {
       QCOMPARE(m.blocks.group[b], s.blocks[b].group);
       QCOMPARE(m.blocks.material[b], s.blocks[b].material);
+      QCOMPARE(bool(m.blocks.deformable[b]), s.blocks[b].deformable);
     }
-    // Three undos take the assignments back.
-    for (int k = 0; k < 3; ++k) {
+    // Four undos take the zones and the assignments back.
+    for (int k = 0; k < 4; ++k) {
       w.undo();
       QVERIFY(wait_finished(w));
     }

@@ -153,6 +153,11 @@ void MainWindow::buildModelMenu() {
     if (selection_.isEmpty()) return console_->append("select blocks first", true);
     runCommand("fix " + selection_);
   });
+  model->addAction("&Null zones in the box", this, [this] {
+    if (!selection_.startsWith("x="))
+      return console_->append("drag a box with the Select tool first", true);
+    runCommand("zone null " + selection_);
+  });
   connect(view_, &VtkView::boxSelected, this, [this](QPointF lo, QPointF hi) {
     selectBox({lo.x(), lo.y()}, {hi.x(), hi.y()});
   });
