@@ -394,6 +394,21 @@ class TestGui : public QObject {
     prop.commands = QStringList{"block 2.1,1 4,1 4,2 2.1,2 group=prop material=stone"};
     w.stagePanel()->addStage(remove);
     w.stagePanel()->addStage(prop);
+    // The plan is saved with the script (as comments) and comes back when it is opened.
+    const QString planned = dir_.filePath("planned.tess");
+    QVERIFY(w.saveScript(planned));
+    {
+      MainWindow other;
+      other.openScript(planned);
+      QVERIFY(wait_finished(other));
+      const auto& back = other.stagePanel()->stages();
+      QCOMPARE(back.size(), size_t(2));
+      QCOMPARE(back[1].name, prop.name);
+      QCOMPARE(back[1].commands, prop.commands);
+      QCOMPARE(back[0].ratio, 1e-4);
+      QCOMPARE(back[0].cycles, qint64(20000));
+      QCOMPARE(other.journal().size(), w.journal().size());
+    }
     QSignalSpy done(&w, &MainWindow::stagesFinished);
     w.runStages();
     QVERIFY(done.wait(60000));

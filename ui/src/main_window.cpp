@@ -28,6 +28,7 @@
 #include "tessera/ui/history_charts.hpp"
 #include "tessera/ui/model_tree.hpp"
 #include "tessera/ui/solver_worker.hpp"
+#include "tessera/ui/stage_panel.hpp"
 #include "tessera/ui/vtk_view.hpp"
 
 namespace tessera::ui {
@@ -219,6 +220,9 @@ void MainWindow::openScript(const QString& path) {
   if (f.open(QIODevice::ReadOnly | QIODevice::Text))
     journal_ = QString::fromUtf8(f.readAll()).split('\n');
   if (!journal_.isEmpty() && journal_.back().isEmpty()) journal_.removeLast();
+  // A plan of stages saved with the script comes back into the stage list.
+  stages_->clear();
+  journal_ = stages_->takePlan(journal_);
   const QString out = info.dir().filePath(info.completeBaseName() + "_out");
   setWindowTitle("Tessera - " + info.fileName());
   QSettings().setValue("files/dir", info.absolutePath());
@@ -410,6 +414,7 @@ bool MainWindow::saveScript(const QString& path) {
   if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return false;
   QTextStream out(&f);
   for (const QString& line : journal_) out << line << '\n';
+  for (const QString& line : stages_->planComments()) out << line << '\n';
   out.flush();
   if (f.error() != QFileDevice::NoError) return false;
   dirty_ = false;

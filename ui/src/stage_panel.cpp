@@ -10,6 +10,7 @@
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -53,12 +54,55 @@ StagePanel::StagePanel(QWidget* parent) : QWidget(parent), list_(new QListWidget
 void StagePanel::addStage(const PlannedStage& s) {
   stages_.push_back(s);
   refresh();
+  emit edited();
 }
 
 void StagePanel::removeStage(int i) {
   if (i < 0 || static_cast<size_t>(i) >= stages_.size()) return;
   stages_.erase(stages_.begin() + i);
   refresh();
+  emit edited();
+}
+
+void StagePanel::clear() {
+  stages_.clear();
+  refresh();
+}
+
+QStringList StagePanel::planComments() const {
+  QStringList out;
+  for (const PlannedStage& s : stages_) {
+    if (s.state == PlannedStage::State::kDone) continue;
+    out << QString("; stage \"%1\" ratio=%2 cycles=%3")
+               .arg(s.name)
+               .arg(s.ratio, 0, 'g', 6)
+               .arg(s.cycles);
+    for (const QString& c : s.commands) out << ";   " + c.trimmed();
+  }
+  return out;
+}
+
+QStringList StagePanel::takePlan(const QStringList& script) {
+  static const QRegularExpression head(R"re(^; stage "(.*)" ratio=(\S+) cycles=(\d+)\s*$)re");
+  QStringList rest;
+  PlannedStage* current = nullptr;
+  for (const QString& line : script) {
+    const auto m = head.match(line);
+    if (m.hasMatch()) {
+      PlannedStage s;
+      s.name = m.captured(1), s.ratio = m.captured(2).toDouble();
+      s.cycles = m.captured(3).toLongLong();
+      stages_.push_back(s);
+      current = &stages_.back();
+    } else if (current && line.startsWith(";   ")) {
+      current->commands << line.mid(4).trimmed();
+    } else {
+      current = nullptr;
+      rest << line;
+    }
+  }
+  refresh();
+  return rest;
 }
 
 void StagePanel::moveStage(int i, int delta) {
@@ -67,6 +111,7 @@ void StagePanel::moveStage(int i, int delta) {
   std::swap(stages_[size_t(i)], stages_[size_t(j)]);
   refresh();
   list_->setCurrentRow(j);
+  emit edited();
 }
 
 void StagePanel::setState(int i, PlannedStage::State state, std::shared_ptr<const Snapshot> r) {
@@ -138,6 +183,7 @@ bool StagePanel::edit(int i) {
     stages_[size_t(i)] = s;
   }
   refresh();
+  emit edited();
   return true;
 }
 

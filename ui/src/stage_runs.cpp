@@ -24,6 +24,7 @@ void MainWindow::buildStageDock() {
   d->setWidget(stages_);
   addDockWidget(Qt::RightDockWidgetArea, d);
   connect(stages_, &StagePanel::runRequested, this, &MainWindow::runStages);
+  connect(stages_, &StagePanel::edited, this, [this] { dirty_ = true; });
   connect(stages_, &StagePanel::resultChosen, this, &MainWindow::showStageResult);
   connect(stages_, &StagePanel::exportRequested, this, [this] {
     QSettings settings;

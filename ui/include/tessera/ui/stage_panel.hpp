@@ -38,12 +38,20 @@ class StagePanel : public QWidget {
   static QStringList lines(const PlannedStage& s);
   // Selects stage i in the list (showing its results if it has them).
   void select(int i);
+  void clear();
+  // The stages not yet run as script comments ("; stage NAME ratio=R cycles=N" and ";   CMD"
+  // lines), so a saved script keeps the plan; and the stages read back from such lines (the
+  // other lines returned).
+  QStringList planComments() const;
+  QStringList takePlan(const QStringList& script);
 
  signals:
   void runRequested();
   void exportRequested();
   // A stage with results was selected: show them.
   void resultChosen(int stage);
+  // The plan was changed by the user (added, edited, moved, removed).
+  void edited();
 
  private:
   void refresh();
