@@ -460,6 +460,17 @@ class TestGui : public QObject {
     QVERIFY(wait_finished(w));
     w.view()->resetCamera();
     QTest::qWait(50);
+    // Openings and generators preview their outlines; cancelled, nothing runs.
+    CommandDialog* opening = w.openDialog("tunnel");
+    QCOMPARE(w.view()->previewSegments(), size_t(24));
+    opening->setValue("segments", "32");
+    QCOMPARE(w.view()->previewSegments(), size_t(32));
+    opening->reject();
+    QCOMPARE(w.view()->previewSegments(), size_t(0));
+    CommandDialog* wall = w.openDialog("wall");
+    QCOMPARE(w.view()->previewSegments(), size_t(4 * (5 * 8 + 5 * 9)));  // 10 courses
+    wall->reject();
+    QCOMPARE(w.journal().size(), 7);
     // The joint set dialog, typed into; the traces show before the cut.
     CommandDialog* d = w.openDialog("jset");
     QVERIFY(d);

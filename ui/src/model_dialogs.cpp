@@ -4,6 +4,7 @@
 #include <QAction>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <algorithm>
 
 #include "tessera/generators.hpp"
 #include "tessera/ui/command_dialog.hpp"
@@ -61,14 +62,33 @@ DialogSpec spec(const QString& name) {
              {"!extend", "Trace ends run to block edges", "", "", ""},
              {"name", "Name", "", "", "the joints' name for properties and selections"}},
             true};
+  const CommandField core_name{"name", "Name", "", "", "the opening's joints, e.g. for pressure"};
+  const CommandField core{"group", "Group of the core", "", "tunnel",
+                          "excavate it with delete group=..."};
   if (name == "tunnel")
     return {"Circular opening",
             "tunnel circle",
             {{"centre", "Centre", "x,y m", "0,0", ""},
              {"radius", "Radius", "m", "1", ""},
              {"segments", "Segments", "", "24", ""},
-             {"name", "Name", "", "", ""},
-             {"group", "Group of the core", "", "tunnel", "excavate it with delete group=..."}}};
+             core_name,
+             core}};
+  if (name == "horseshoe")
+    return {"Horseshoe opening",
+            "tunnel horseshoe",
+            {{"centre", "Middle of the floor", "x,y m", "0,0", ""},
+             {"width", "Width", "m", "6", ""},
+             {"height", "Height", "m", "6", "walls plus the half-circle roof"},
+             {"segments", "Roof segments", "", "12", ""},
+             core_name,
+             core}};
+  if (name == "rectangle")
+    return {"Rectangular opening",
+            "tunnel rectangle",
+            {{"#a", "A corner", "x,y m", "0,0", ""},
+             {"#b", "The opposite corner", "x,y m", "4,3", ""},
+             core_name,
+             core}};
   if (name == "voronoi")
     return {"Voronoi cells",
             "voronoi",
@@ -136,7 +156,9 @@ void MainWindow::buildModelMenu() {
   const std::pair<const char*, const char*> items[] = {{"material", "&Material…"},
                                                        {"joint", "&Joint properties…"},
                                                        {"jset", "Joint &set…"},
-                                                       {"tunnel", "&Opening…"},
+                                                       {"tunnel", "Circular &opening…"},
+                                                       {"horseshoe", "&Horseshoe opening…"},
+                                                       {"rectangle", "&Rectangular opening…"},
                                                        {"voronoi", "&Voronoi cells…"},
                                                        {"wall", "&Wall…"},
                                                        {"arch", "&Arch…"},
@@ -203,10 +225,13 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
   auto* d = new CommandDialog(s.title, s.head, s.fields, this);
   d->setAttribute(Qt::WA_DeleteOnClose);
   if (s.on_selection) d->setTail(selection_);
-  if (name == "jset") {
-    connect(d, &CommandDialog::changed, this, [this, d] { previewJointSet(*d); });
+  // Cuts and generators show what they will make before OK.
+  static const QStringList previewed{"jset",    "tunnel", "horseshoe", "rectangle",
+                                     "voronoi", "wall",   "arch"};
+  if (previewed.contains(name)) {
+    connect(d, &CommandDialog::changed, this, [this, d, name] { preview(name, *d); });
     connect(d, &QDialog::finished, this, [this] { view_->setPreview({}); });
-    previewJointSet(*d);
+    preview(name, *d);
   }
   connect(d, &QDialog::accepted, this, [this, d, name] {
     if (name != "assign") return runCommand(d->command());
@@ -227,42 +252,106 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
   return d;
 }
 
-void MainWindow::previewJointSet(const CommandDialog& d) {
-  // The traces the command would cut, over the box of the blocks it acts on.
-  if (!shown_ || shown_->blocks.empty()) return view_->setPreview({});
-  auto pair = [](const QString& text, double& a, double& b) {
-    const QStringList parts = text.split(',');
-    bool ok = !text.isEmpty();
-    a = parts.value(0).toDouble(&ok);
-    b = parts.size() > 1 ? parts[1].toDouble() : 0.0;
-    return ok;
-  };
-  JointSetSpec j;
-  if (!pair(d.value("angle"), j.angle, j.angle_sd) ||
-      !pair(d.value("spacing"), j.spacing, j.spacing_sd) || j.spacing <= 0)
-    return view_->setPreview({});
-  pair(d.value("trace"), j.trace, j.trace_sd);
-  pair(d.value("gap"), j.gap, j.gap_sd);
-  double ox = 0, oy = 0;
-  if (pair(d.value("origin"), ox, oy)) j.origin = {ox, oy};
-  if (!d.value("seed").isEmpty()) j.seed = d.value("seed").toULongLong();
-  Vec2 lo = shown_->lo, hi = shown_->hi;
-  if (!selected_.empty()) {
-    lo = Vec2(1e300, 1e300), hi = -lo;
-    for (int b : selected_) {
-      const SnapshotBlock& blk = shown_->blocks[size_t(b)];
-      for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v) {
-        const Vec2 p = shown_vertex(*shown_, blk, v, 1.0);
-        lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+namespace {
+// "a" or "a,b" as numbers; false if the first is missing or not a number.
+bool numbers(const QString& text, double& a, double& b) {
+  const QStringList parts = text.split(',');
+  bool ok = false;
+  a = parts.value(0).toDouble(&ok);
+  if (parts.size() > 1) b = parts[1].toDouble();
+  return ok && !text.isEmpty();
+}
+
+// A closed outline as segments.
+void add_loop(const std::vector<Vec2>& pts, std::vector<std::array<Vec2, 2>>& out) {
+  for (size_t k = 0; k < pts.size(); ++k) out.push_back({pts[k], pts[(k + 1) % pts.size()]});
+}
+
+void add_cuts(const std::vector<CutLine>& cuts, std::vector<std::array<Vec2, 2>>& out) {
+  for (const CutLine& c : cuts)
+    for (size_t k = 0; k + 1 < c.points.size(); ++k) out.push_back({c.points[k], c.points[k + 1]});
+}
+}  // namespace
+
+void MainWindow::preview(const QString& name, const CommandDialog& d) {
+  std::vector<std::array<Vec2, 2>> lines;
+  double a = 0, b = 0, x = 0, y = 0;
+  // The box of the blocks a cut acts on: the selection's, or the whole model's.
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  if (shown_ && !shown_->blocks.empty()) {
+    lo = shown_->lo, hi = shown_->hi;
+    if (!selected_.empty()) {
+      lo = Vec2(1e300, 1e300), hi = -lo;
+      for (int blk : selected_) {
+        const SnapshotBlock& s = shown_->blocks[size_t(blk)];
+        for (uint32_t v = s.vert_begin; v < s.vert_end; ++v) {
+          const Vec2 p = shown_vertex(*shown_, s, v, 1.0);
+          lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        }
       }
     }
   }
-  // Many thousands of traces would only blacken the view.
-  if ((hi - lo).norm() / j.spacing > 5000) return view_->setPreview({});
-  std::vector<std::array<Vec2, 2>> lines;
-  for (const CutLine& c : joint_set_traces(j, lo, hi, -1))
-    for (size_t k = 0; k + 1 < c.points.size(); ++k)
-      lines.push_back({c.points[k], c.points[k + 1]});
+  const double box = (hi - lo).norm();
+  if (name == "jset" && box > 0) {
+    JointSetSpec j;
+    if (numbers(d.value("angle"), j.angle, j.angle_sd) &&
+        numbers(d.value("spacing"), j.spacing, j.spacing_sd) && j.spacing > 0 &&
+        box / j.spacing < 5000) {
+      numbers(d.value("trace"), j.trace, j.trace_sd);
+      numbers(d.value("gap"), j.gap, j.gap_sd);
+      if (numbers(d.value("origin"), x, y)) j.origin = {x, y};
+      if (!d.value("seed").isEmpty()) j.seed = d.value("seed").toULongLong();
+      add_cuts(joint_set_traces(j, lo, hi, -1), lines);
+    }
+  } else if (name == "voronoi" && box > 0) {
+    if (numbers(d.value("size"), a, b) && a > 0 && box / a < 700)
+      add_cuts(voronoi_traces(lo, hi, a,
+                              d.value("seed").isEmpty() ? 1 : d.value("seed").toULongLong(), -1),
+               lines);
+  } else if (name == "tunnel") {
+    if (numbers(d.value("centre"), x, y) && numbers(d.value("radius"), a, b) && a > 0)
+      add_loop(circle_outline({x, y}, a, std::clamp(d.value("segments").toInt(), 3, 2000)), lines);
+  } else if (name == "horseshoe") {
+    double w = 0, h = 0;
+    if (numbers(d.value("centre"), x, y) && numbers(d.value("width"), w, b) &&
+        numbers(d.value("height"), h, b) && w > 0 && h > w / 2)
+      add_loop(horseshoe_outline({x, y}, w, h, std::clamp(d.value("segments").toInt(), 2, 2000)),
+               lines);
+  } else if (name == "rectangle") {
+    double x1 = 0, y1 = 0;
+    if (numbers(d.value("#a"), x, y) && numbers(d.value("#b"), x1, y1))
+      add_loop({{x, y}, {x1, y}, {x1, y1}, {x, y1}}, lines);
+  } else if (name == "wall" || name == "arch") {
+    // The generator itself, into a scratch model: the preview is the blocks it will add.
+    Model scratch;
+    if (name == "wall") {
+      WallSpec w;
+      const int courses = d.value("courses").toInt(), bricks = d.value("bricks").toInt();
+      if (numbers(d.value("brick"), w.brick_length, w.brick_height) && w.brick_length > 0 &&
+          w.brick_height > 0 && courses > 0 && bricks > 0 && courses * bricks < 20000) {
+        w.courses = courses, w.bricks = bricks;
+        if (numbers(d.value("origin"), x, y)) w.origin = {x, y};
+        scratch.settings.rounding = 0.01 * std::min(w.brick_length, w.brick_height);
+        add_running_bond_wall(scratch, w);
+      }
+    } else {
+      ArchSpec s;
+      const int n = d.value("voussoirs").toInt();
+      if (numbers(d.value("centre"), x, y) && numbers(d.value("radius"), s.radius, b) &&
+          numbers(d.value("thickness"), s.thickness, b) && s.radius > 0 && s.thickness > 0 &&
+          n > 0 && n < 5000) {
+        s.centre = {x, y}, s.voussoirs = n;
+        numbers(d.value("half_angle"), s.half_angle, b);
+        numbers(d.value("abutment"), s.abutment, b);
+        if (s.half_angle > 0 && s.half_angle <= 90) {
+          scratch.settings.rounding = 0.01 * s.thickness;
+          add_arch(scratch, s);
+        }
+      }
+    }
+    for (size_t k = 0; k < scratch.blocks.size(); ++k)
+      add_loop(scratch.blocks.world_polygon(k), lines);
+  }
   view_->setPreview(lines);
 }
 

@@ -75,7 +75,8 @@ class MainWindow : public QMainWindow {
   void selectBox(Vec2 lo, Vec2 hi);
   void selectBlock(int block);
   // Opens one of the Model menu's dialogs by name ("material", "joint", "jset", "tunnel",
-  // "voronoi", "wall", "arch", "zones", "assign", "boundary", "insitu"); OK runs its commands.
+  // "horseshoe", "rectangle", "voronoi", "wall", "arch", "zones", "assign", "boundary",
+  // "insitu"); OK runs its commands. Cuts and generators preview what they will make.
   CommandDialog* openDialog(const QString& name);
   // Runs lines one after another as commands; stops at the first that fails.
   void runCommands(const QStringList& lines);
@@ -118,7 +119,8 @@ class MainWindow : public QMainWindow {
   void onStageLineFinished(bool ok);
   std::string stageTitle(int stage) const;
   void buildModelMenu();  // model_dialogs.cpp
-  void previewJointSet(const CommandDialog& d);
+  // Draws what a cut or generator dialog will make (model_dialogs.cpp).
+  void preview(const QString& name, const CommandDialog& d);
   void frame();
   void display(std::shared_ptr<const Snapshot> s);
   void redraw(bool fit = false);
