@@ -495,6 +495,7 @@ class TestGui : public QObject {
     QTest::mouseMove(w.view(), w.view()->pixelOf({10.5, 6.5}));
     QTest::mouseRelease(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({10.5, 6.5}));
     QCOMPARE(w.selectedBlocks().size(), size_t(2));
+    const std::vector<int> chosen = w.selectedBlocks();
     if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
       w.grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/selection.png");
     QVERIFY(w.selection().startsWith("x=") && w.selection().contains(" y="));
@@ -512,10 +513,21 @@ class TestGui : public QObject {
     d->accept();
     QVERIFY(wait_finished(w));
     QVERIFY(w.snapshot()->zones.size() > 20);
+    // A click on the top edge of the zoned top block selects that outline edge; a stress on it
+    // through the Boundary dialog.
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({5, 6.0}));
+    QVERIFY2(w.selection().startsWith("x=") && w.selectedBlocks().empty(),
+             qPrintable(w.selection()));
+    d = w.openDialog("boundary");
+    d->setValue("stress", "0,-1e6,0");
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QVERIFY(w.journal().last().startsWith("boundary stress=0,-1e6,0 x="));
+    QVERIFY(w.console()->text().contains("boundary stress on 1 edges"));
     const Snapshot& s = *w.snapshot();
     const auto& groups = s.groups;
     int upper = 0;
-    for (const int b : w.selectedBlocks()) {
+    for (const int b : chosen) {
       const SnapshotBlock& blk = s.blocks[size_t(b)];
       QCOMPARE(QString::fromStdString(groups[size_t(blk.group)]), QString("upper"));
       QCOMPARE(QString::fromStdString(s.materials[size_t(blk.material)].name), QString("soft"));
@@ -535,12 +547,12 @@ class TestGui : public QObject {
       QCOMPARE(m.blocks.material[b], s.blocks[b].material);
       QCOMPARE(bool(m.blocks.deformable[b]), s.blocks[b].deformable);
     }
-    // Four undos take the zones and the assignments back.
-    for (int k = 0; k < 4; ++k) {
+    // Five undos take the boundary stress, the zones and the assignments back.
+    for (int k = 0; k < 5; ++k) {
       w.undo();
       QVERIFY(wait_finished(w));
     }
-    for (const int b : w.selectedBlocks())
+    for (const int b : chosen)
       QCOMPARE(QString::fromStdString(
                    w.snapshot()->materials[size_t(w.snapshot()->blocks[size_t(b)].material)].name),
                QString("rock"));

@@ -183,8 +183,14 @@ void MainWindow::buildModelMenu() {
   connect(view_, &VtkView::boxSelected, this, [this](QPointF lo, QPointF hi) {
     selectBox({lo.x(), lo.y()}, {hi.x(), hi.y()});
   });
-  connect(view_, &VtkView::picked, this, [this](int block, int) {
-    if (view_->drawing().mode() == DrawMode::kSelect) selectBlock(block);
+  connect(view_, &VtkView::picked, this, [this](int block, int contact) {
+    if (view_->drawing().mode() != DrawMode::kSelect) return;
+    if (contact >= 0 && shown_)
+      return selectJoint(QString::fromStdString(shown_->contacts[size_t(contact)].joint_set));
+    selectBlock(block);
+  });
+  connect(view_, &VtkView::edgePicked, this, [this](int, QPointF a, QPointF b) {
+    selectEdge({a.x(), a.y()}, {b.x(), b.y()});
   });
 }
 
@@ -211,6 +217,24 @@ void MainWindow::selectBlock(int block) {
   }
   view_->setHighlight(selected_);
   statusBar()->showMessage(selection_.isEmpty() ? "nothing selected" : "selected " + selection_);
+}
+
+void MainWindow::selectEdge(Vec2 a, Vec2 b) {
+  // The edge as the box around it, a hair wider, so that boundary commands take its two nodes.
+  const double pad = 1e-6 * std::max((b - a).norm(), 1e-3);
+  const Vec2 lo = a.cwiseMin(b) - Vec2(pad, pad), hi = a.cwiseMax(b) + Vec2(pad, pad);
+  selection_ = QString("x=%1,%2 y=%3,%4").arg(num(lo.x()), num(hi.x()), num(lo.y()), num(hi.y()));
+  selected_.clear();
+  view_->setHighlight({}, {{a, b}});
+  statusBar()->showMessage("selected an outline edge: " + selection_);
+}
+
+void MainWindow::selectJoint(const QString& name) {
+  selected_.clear();
+  selection_ = name.isEmpty() ? QString() : "joints=" + name;
+  view_->setHighlight({});
+  statusBar()->showMessage(name.isEmpty() ? "this contact lies on no named joint"
+                                          : "selected the joints " + name);
 }
 
 void MainWindow::runCommands(const QStringList& lines) {
@@ -242,9 +266,11 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
                   joint = d->value("joint");
     if (!group.isEmpty()) lines << "group " + group + " " + selection_;
     if (!material.isEmpty()) lines << "material assign " + material + " " + selection_;
-    if (!joint.isEmpty() && !group.isEmpty())
+    if (!joint.isEmpty() && selection_.startsWith("joints="))
+      lines << "joint assign " + joint + " " + selection_;
+    else if (!joint.isEmpty() && !group.isEmpty())
       lines << "joint assign " + joint + " groups=" + group + "," + group;
-    if (!joint.isEmpty() && group.isEmpty())
+    else if (!joint.isEmpty())
       console_->append("joint properties for a selection need a group to name it", true);
     runCommands(lines);
   });

@@ -291,6 +291,7 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
   add_contacts(s, o, out, size);
   add_arrows(s, o, out, size);
   out.lo = s.lo, out.hi = s.hi;
+  for (const auto& b : s.blocks) out.deformable_blocks.push_back(b.deformable);
   // Magnified shapes may leave the box the live model fills.
   for (const auto& list : {&out.polygons, &out.zones})
     for (const auto& p : *list)

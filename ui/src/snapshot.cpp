@@ -181,6 +181,8 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     o.length = C.length[c], o.gap = C.gap[c], o.fn = C.fn[c], o.fs = C.fs[c];
     o.shear_disp = C.shear_disp[c], o.flags = C.flags[c];
     if (C.joint[c] < m.joints.size()) o.joint = m.joints[C.joint[c]].name;
+    if (C.tag[c] >= 0 && static_cast<size_t>(C.tag[c]) < m.joint_tags.size())
+      o.joint_set = m.joint_tags[static_cast<size_t>(C.tag[c])];
     o.from = o.to = o.point;
     s.contacts.push_back(std::move(o));
   }

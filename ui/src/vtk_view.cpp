@@ -211,7 +211,7 @@ void VtkView::rebuild() {
   fill_polygons(blocks_, polys, colours, 0.0);
   // Block outlines above the zones, which sit above the block fills.
   fill_polygons(edges_, polys, colours, 0.006);
-  std::vector<std::array<Vec2, 2>> outline;
+  std::vector<std::array<Vec2, 2>> outline = highlight_segments_;
   for (const auto& p : scene_.polygons)
     if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
         highlight_blocks_.end())
@@ -323,8 +323,10 @@ void VtkView::setPreview(const std::vector<std::array<Vec2, 2>>& segments) {
   update();
 }
 
-void VtkView::setHighlight(const std::vector<int>& blocks) {
+void VtkView::setHighlight(const std::vector<int>& blocks,
+                           const std::vector<std::array<Vec2, 2>>& segments) {
   highlight_blocks_ = blocks;
+  highlight_segments_ = segments;
   rebuild();
   update();
 }
@@ -459,6 +461,29 @@ void VtkView::mouseReleaseEvent(QMouseEvent* e) {
   if (!dragged_ && button_ == Qt::LeftButton && has_scene_) {
     const Vec2 p = modelPoint(e->pos());
     const int contact = bar_at(scene_, p);
+    // The select tool: an outline edge of a deformable block near the click (boundary edges
+    // take stresses and conditions), unless a contact bar is under it.
+    if (drawing_.mode() == DrawMode::kSelect && contact < 0) {
+      const double reach = (modelPoint(e->pos() + QPoint(5, 0)) - p).norm();
+      double best = reach;
+      int block = -1;
+      Vec2 ea, eb;
+      for (const auto& poly : scene_.polygons) {
+        if (poly.block < 0 || !scene_.deformable(poly.block)) continue;
+        for (size_t k = 0; k < poly.points.size(); ++k) {
+          const Vec2 a = poly.points[k], b = poly.points[(k + 1) % poly.points.size()];
+          const double t =
+              std::clamp((p - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+          if (const double d = (a + t * (b - a) - p).norm(); d < best)
+            best = d, block = poly.block, ea = a, eb = b;
+        }
+      }
+      if (block >= 0) {
+        button_ = Qt::NoButton;
+        emit edgePicked(block, QPointF(ea.x(), ea.y()), QPointF(eb.x(), eb.y()));
+        return;
+      }
+    }
     emit picked(contact >= 0 ? -1 : block_at(scene_, p), contact);
   }
   button_ = Qt::NoButton;

@@ -74,6 +74,9 @@ class MainWindow : public QMainWindow {
   const std::vector<int>& selectedBlocks() const { return selected_; }
   void selectBox(Vec2 lo, Vec2 hi);
   void selectBlock(int block);
+  // An outline edge (as the box around it, for boundary commands) or a named joint set.
+  void selectEdge(Vec2 a, Vec2 b);
+  void selectJoint(const QString& name);
   // Opens one of the Model menu's dialogs by name ("material", "joint", "jset", "tunnel",
   // "horseshoe", "rectangle", "voronoi", "wall", "arch", "zones", "assign", "boundary",
   // "insitu"); OK runs its commands. Cuts and generators preview what they will make.

@@ -5,6 +5,7 @@
 // same model and options show the same colours, widths and legends.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,11 @@ struct Scene {
   std::string title, caption;                 // caption: cycle, time, force scale
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // what to show
   double arrow_scale = 0;                     // drawn length per metre of displacement
+  std::vector<uint8_t> deformable_blocks;     // by snapshot block index
+  bool deformable(int block) const {
+    return block >= 0 && static_cast<size_t>(block) < deformable_blocks.size() &&
+           deformable_blocks[static_cast<size_t>(block)];
+  }
 };
 
 Scene build_scene(const Snapshot& s, const ViewOptions& o);

@@ -36,7 +36,8 @@ struct SnapshotContact {
   Vec2 from = Vec2::Zero(), to = Vec2::Zero();
   double length = 0, gap = 0, fn = 0, fs = 0, shear_disp = 0;
   uint8_t flags = 0;
-  std::string joint;  // joint property name
+  std::string joint;      // joint property name
+  std::string joint_set;  // name of the joint set, crack or opening it lies on (may be empty)
 };
 
 // A zone of a deformable block: its nodes (into Snapshot::nodes), block, stress, plastic state.

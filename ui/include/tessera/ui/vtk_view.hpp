@@ -55,8 +55,9 @@ class VtkView : public QOpenGLWidget {
   // Lines drawn over the model to preview a cut before it is made (empty: none).
   void setPreview(const std::vector<std::array<Vec2, 2>>& segments);
   size_t previewSegments() const { return preview_count_; }
-  // Blocks (scene indices) outlined as selected.
-  void setHighlight(const std::vector<int>& blocks);
+  // Blocks (scene indices) and segments outlined as selected.
+  void setHighlight(const std::vector<int>& blocks,
+                    const std::vector<std::array<Vec2, 2>>& segments = {});
 
  signals:
   void picked(int block, int contact);
@@ -65,6 +66,8 @@ class VtkView : public QOpenGLWidget {
   void drawn(DrawMode mode, const QVector<QPointF>& points);
   // The select tool's box, in model coordinates.
   void boxSelected(QPointF lo, QPointF hi);
+  // The select tool clicked within a few pixels of a deformable block's outline edge.
+  void edgePicked(int block, QPointF a, QPointF b);
 
  protected:
   void initializeGL() override;
@@ -89,6 +92,7 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkActor> blocks_actor_, zones_actor_, edges_actor_, bars_actor_, arrows_actor_,
       band_actor_, preview_actor_, highlight_actor_;
   std::vector<int> highlight_blocks_;
+  std::vector<std::array<Vec2, 2>> highlight_segments_;
   size_t preview_count_ = 0;
   vtkNew<vtkScalarBarActor> scalar_bar_;
   vtkNew<vtkLegendScaleActor> scale_;
