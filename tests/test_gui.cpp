@@ -53,6 +53,21 @@ bool wait_finished(MainWindow& w, int timeout_ms = 60000) {
   return spy.takeFirst().at(0).toBool();
 }
 
+// Writes a script into the test folder; returns its path (empty if it cannot be written).
+QString write_script(const QTemporaryDir& dir, const QString& name, const char* text) {
+  const QString path = dir.filePath(name);
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(text) < 0) return {};
+  return path;
+}
+
+// The colour of a framebuffer grab at a model point.
+QColor pixel_at(VtkView* view, const QImage& img, double x, double y) {
+  const QPoint p = view->pixelOf({x, y});
+  const double r = img.devicePixelRatio();
+  return img.pixelColor(int(p.x() * r), int(p.y() * r));
+}
+
 bool close_to(QColor c, Rgb expected, int tol = 12) {
   return std::abs(c.red() - expected.r) <= tol && std::abs(c.green() - expected.g) <= tol &&
          std::abs(c.blue() - expected.b) <= tol;
@@ -171,11 +186,7 @@ class TestGui : public QObject {
     QTest::qWait(100);
     const QImage img = w.view()->grabFramebuffer();
     QVERIFY(!img.isNull() && img.width() > 100);
-    const auto pixel = [&](double x, double y) {
-      const QPoint p = w.view()->pixelOf({x, y});
-      const double r = img.devicePixelRatio();
-      return img.pixelColor(int(p.x() * r), int(p.y() * r));
-    };
+    const auto pixel = [&](double x, double y) { return pixel_at(w.view(), img, x, y); };
     // Groups in order of first use: base 0, left 1, right 2.
     QVERIFY2(close_to(pixel(2.0, 0.5), category(0)), qPrintable(pixel(2.0, 0.5).name()));
     QVERIFY2(close_to(pixel(0.95, 2.0), category(1)), qPrintable(pixel(0.95, 2.0).name()));
@@ -204,18 +215,16 @@ class TestGui : public QObject {
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in
   // ramp colours, compressive blue at the foot, near zero red at the top; by state, four entries.
   void framebufferShowsZoneStresses() {
-    const QString path = dir_.filePath("column.tess");
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(
-        "round 0.01\nmaterial define stone density=2500\n"
-        "material define rock density=2000 E=1e9 nu=0.25\n"
-        "joint define j kn=1e11 ks=1e11 friction=30\njoint assign j\n"
-        "block -1,-1 2,-1 2,0 -1,0 material=stone\nfix x=-1,2 y=-1,0\n"
-        "block 0,0 1,0 1,4 0,4 material=rock\nzone generate edge=0.25 x=0,1 y=0,4\n"
-        "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
-        "gravity 0 -10\nsolve ratio=1e-5 cycles=100000\n");
-    f.close();
+    const QString path =
+        write_script(dir_, "column.tess",
+                     "round 0.01\nmaterial define stone density=2500\n"
+                     "material define rock density=2000 E=1e9 nu=0.25\n"
+                     "joint define j kn=1e11 ks=1e11 friction=30\njoint assign j\n"
+                     "block -1,-1 2,-1 2,0 -1,0 material=stone\nfix x=-1,2 y=-1,0\n"
+                     "block 0,0 1,0 1,4 0,4 material=rock\nzone generate edge=0.25 x=0,1 y=0,4\n"
+                     "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
+                     "gravity 0 -10\nsolve ratio=1e-5 cycles=100000\n");
+    QVERIFY(!path.isEmpty());
     MainWindow w;
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -233,11 +242,7 @@ class TestGui : public QObject {
     QCOMPARE(QString::fromStdString(scene.blocks_legend.title), QString("syy [MPa]"));
     QVERIFY(scene.blocks_legend.lo < -0.07 && scene.blocks_legend.hi > -0.01);
     const QImage img = w.view()->grabFramebuffer();
-    const auto pixel = [&](double x, double y) {
-      const QPoint p = w.view()->pixelOf({x, y});
-      const double r = img.devicePixelRatio();
-      return img.pixelColor(int(p.x() * r), int(p.y() * r));
-    };
+    const auto pixel = [&](double x, double y) { return pixel_at(w.view(), img, x, y); };
     const QColor foot = pixel(0.5, 0.05), top = pixel(0.5, 3.95);
     QVERIFY2(foot.blue() > foot.red() + 80, qPrintable(foot.name()));
     QVERIFY2(top.red() > top.blue() + 80, qPrintable(top.name()));
@@ -305,15 +310,13 @@ class TestGui : public QObject {
   // crack across the base, each a command in the journal; undo and redo step through them; the
   // saved script, run headless, gives the same blocks.
   void drawsBlocksUndoesAndRedoes() {
-    const QString path = dir_.filePath("draw.tess");
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(
-        "round 0.005\nmaterial define stone density=2500\n"
-        "joint define dry kn=1e9 ks=1e9 friction=30\njoint assign dry\n"
-        "block 0,0 4,0 4,1 0,1 group=base material=stone\nfix group=base\n"
-        "block 0,1 1.9,1 1.9,3 0,3 group=left material=stone\n");
-    f.close();
+    const QString path =
+        write_script(dir_, "draw.tess",
+                     "round 0.005\nmaterial define stone density=2500\n"
+                     "joint define dry kn=1e9 ks=1e9 friction=30\njoint assign dry\n"
+                     "block 0,0 4,0 4,1 0,1 group=base material=stone\nfix group=base\n"
+                     "block 0,1 1.9,1 1.9,3 0,3 group=left material=stone\n");
+    QVERIFY(!path.isEmpty());
     MainWindow w;
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -443,16 +446,14 @@ class TestGui : public QObject {
   // before the cut), a box dragged over two blocks, a group, material and joint properties
   // assigned to them; each step a command; undone; the saved script rebuilds the same model.
   void buildsThroughDialogsAndSelection() {
-    const QString path = dir_.filePath("region.tess");
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(
-        "round 0.01\nmaterial define rock density=2600 E=10e9 nu=0.25\n"
-        "material define soft density=2000 E=1e9 nu=0.3\n"
-        "joint define joints kn=1e10 ks=1e10 friction=30\n"
-        "joint define glue kn=1e10 ks=1e10 friction=40 cohesion=1e6 tension=1e6\n"
-        "joint assign joints\nregion 0,0 10,6 group=rock material=rock\n");
-    f.close();
+    const QString path =
+        write_script(dir_, "region.tess",
+                     "round 0.01\nmaterial define rock density=2600 E=10e9 nu=0.25\n"
+                     "material define soft density=2000 E=1e9 nu=0.3\n"
+                     "joint define joints kn=1e10 ks=1e10 friction=30\n"
+                     "joint define glue kn=1e10 ks=1e10 friction=40 cohesion=1e6 tension=1e6\n"
+                     "joint assign joints\nregion 0,0 10,6 group=rock material=rock\n");
+    QVERIFY(!path.isEmpty());
     MainWindow w;
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));

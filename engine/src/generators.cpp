@@ -183,7 +183,8 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   build_adjacency(m);
 }
 
-CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen) {
+CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts,
+                     const std::vector<size_t>& chosen) {
   if (m.cycle > 0) throw ModelError("blocks can be cut only before the first cycle");
   for (const auto& s : m.histories.series)
     if (s.block >= 0)

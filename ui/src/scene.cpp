@@ -110,19 +110,30 @@ const Rgb kStateColours[4] = {{215, 215, 215}, {220, 40, 40}, {200, 60, 200}, {2
 const char* const kStateNames[4] = {"elastic", "shear now", "tension now", "yielded before"};
 const Rgb kNoZones{200, 200, 200};  // rigid blocks in a picture of zones
 
+// The legend's title and value range over the items (a range flatter than `flat` relative is
+// widened so that it has a width); lo and hi are returned too.
+template <class Items, class Value>
+void set_range(Legend& L, ColourBy c, bool continuous, const Items& items, Value value, double flat,
+               double& lo, double& hi) {
+  L.title = value_title(c);
+  L.continuous = continuous;
+  lo = 0, hi = 0;
+  for (size_t i = 0; i < items.size(); ++i) {
+    const double v = value(items[i]);
+    lo = i ? std::min(lo, v) : v, hi = i ? std::max(hi, v) : v;
+  }
+  if (hi - lo < flat * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
+  L.lo = lo, L.hi = hi;
+}
+
 // Zones of deformable blocks coloured by a zone quantity, with their legend.
 void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
   Legend& L = out.blocks_legend;
-  L.title = value_title(o.colour);
   const bool states = o.colour == ColourBy::kZoneState;
-  L.continuous = !states;
   double lo = 0, hi = 0;
-  for (size_t z = 0; z < s.zones.size(); ++z) {
-    const double v = zone_value(s.zones[z], o.colour);
-    lo = z ? std::min(lo, v) : v, hi = z ? std::max(hi, v) : v;
-  }
-  if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
-  L.lo = lo, L.hi = hi;
+  set_range(
+      L, o.colour, !states, s.zones, [&](const SnapshotZone& z) { return zone_value(z, o.colour); },
+      1e-12, lo, hi);
   if (states)
     for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
   else
@@ -158,15 +169,10 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
   }
   const bool categorical = o.colour == ColourBy::kGroup || o.colour == ColourBy::kMaterial;
   Legend& L = out.blocks_legend;
-  L.title = value_title(o.colour);
-  L.continuous = !categorical;
   double lo = 0, hi = 0;
-  for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const double v = block_value(s.blocks[b], o.colour);
-    lo = b ? std::min(lo, v) : v, hi = b ? std::max(hi, v) : v;
-  }
-  if (hi - lo < 1e-300 * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
-  L.lo = lo, L.hi = hi;
+  set_range(
+      L, o.colour, !categorical, s.blocks,
+      [&](const SnapshotBlock& b) { return block_value(b, o.colour); }, 1e-300, lo, hi);
   if (categorical) {
     const bool groups = o.colour == ColourBy::kGroup;
     const size_t n = groups ? s.groups.size() : s.materials.size();
