@@ -1,0 +1,52 @@
+#include "tessera/rigid3d.hpp"
+
+#include <cmath>
+
+namespace tessera {
+
+Vec3 RigidBody3::angular_velocity() const {
+  const Vec3 body = orientation.conjugate() * momentum;
+  return orientation * body.cwiseQuotient(principal);
+}
+
+double RigidBody3::kinetic_energy() const {
+  const Vec3 body = orientation.conjugate() * momentum;
+  return 0.5 * mass * velocity.squaredNorm() +
+         0.5 * body.cwiseProduct(body).cwiseQuotient(principal).sum();
+}
+
+RigidBody3 make_body(const SolidProperties& s, double density) {
+  RigidBody3 b;
+  b.mass = density * s.volume;
+  b.principal = density * s.principal_moments;
+  b.orientation = Eigen::Quaterniond(s.principal_axes);
+  b.orientation.normalize();
+  b.position = s.centroid;
+  return b;
+}
+
+namespace {
+// The exact flow of the kinetic energy about principal axis k for time h: the body turns about
+// that axis at the rate pi_k / I_k; the world angular momentum does not change.
+void rotate_about(RigidBody3& b, int k, double h) {
+  const Vec3 body = b.orientation.conjugate() * b.momentum;
+  const double angle = h * body[k] / b.principal[k];
+  b.orientation = b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(angle, Vec3::Unit(k)));
+}
+}  // namespace
+
+void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) {
+  b.momentum += 0.5 * dt * torque;
+  // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
+  rotate_about(b, 0, 0.5 * dt);
+  rotate_about(b, 1, 0.5 * dt);
+  rotate_about(b, 2, dt);
+  rotate_about(b, 1, 0.5 * dt);
+  rotate_about(b, 0, 0.5 * dt);
+  b.orientation.normalize();
+  b.momentum += 0.5 * dt * torque;
+  if (b.mass > 0) b.velocity += dt * force / b.mass;
+  b.position += dt * b.velocity;
+}
+
+}  // namespace tessera
