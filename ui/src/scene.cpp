@@ -152,19 +152,23 @@ void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
   }
 }
 
+// Block b's outline as drawn (magnified), in the given colour.
+ScenePolygon block_polygon(const Snapshot& s, size_t b, double magnify, Rgb colour) {
+  const SnapshotBlock& blk = s.blocks[b];
+  ScenePolygon p;
+  p.block = static_cast<int>(b);
+  for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v)
+    p.points.push_back(shown_vertex(s, blk, v, magnify));
+  p.colour = colour;
+  return p;
+}
+
 // Colours the block polygons and fills their legend.
 void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
   if (colours_zones(o.colour)) {
     add_zones(s, o, out);
-    for (size_t b = 0; b < s.blocks.size(); ++b) {
-      const SnapshotBlock& blk = s.blocks[b];
-      ScenePolygon p;
-      p.block = static_cast<int>(b);
-      for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v)
-        p.points.push_back(shown_vertex(s, blk, v, o.magnify));
-      p.colour = kNoZones;
-      out.polygons.push_back(std::move(p));
-    }
+    for (size_t b = 0; b < s.blocks.size(); ++b)
+      out.polygons.push_back(block_polygon(s, b, o.magnify, kNoZones));
     return;
   }
   const bool categorical = o.colour == ColourBy::kGroup || o.colour == ColourBy::kMaterial;
@@ -181,14 +185,9 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
           {groups ? s.groups[i] : s.materials[i].name, category(static_cast<int>(i))});
   }
   for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const SnapshotBlock& blk = s.blocks[b];
-    ScenePolygon p;
-    p.block = static_cast<int>(b);
-    for (uint32_t v = blk.vert_begin; v < blk.vert_end; ++v)
-      p.points.push_back(shown_vertex(s, blk, v, o.magnify));
-    const double v = block_value(blk, o.colour);
-    p.colour = categorical ? category(static_cast<int>(v)) : ramp((v - lo) / (hi - lo));
-    out.polygons.push_back(std::move(p));
+    const double v = block_value(s.blocks[b], o.colour);
+    out.polygons.push_back(block_polygon(
+        s, b, o.magnify, categorical ? category(static_cast<int>(v)) : ramp((v - lo) / (hi - lo))));
   }
 }
 
