@@ -178,10 +178,9 @@ void update_interfaces(Model& m) {
           // (A pair's contacts can be owned by either block: checked per contact.)
           if (B.deformable[C.a[c0]] || B.deformable[C.b[c0]])
             for (uint32_t i = c0; i < c1; ++i) {
-              const uint32_t v = C.corner[i], blk = C.a[i];
+              const uint32_t blk = C.a[i];
               if (!B.deformable[blk]) continue;
-              const uint32_t prev = v > B.vert_begin[blk] ? v - 1 : B.vert_begin[blk + 1] - 1;
-              const double own = 0.5 * (B.edge_length[v] + B.edge_length[prev]);
+              const double own = B.vertex_share(blk, C.corner[i]);
               C.length[i] = std::min(C.length[i], std::max(own, C.chord[i]));
             }
           for (uint32_t i = c0; i < c1; ++i) {

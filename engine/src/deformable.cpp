@@ -78,9 +78,7 @@ void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* gra
   // with no rounding.
   for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
     if (!B.convex[v] &&
-        std::abs(cross(B.world_edge_dir[v],
-                       B.world_edge_dir[v > B.vert_begin[b] ? v - 1 : B.vert_begin[b + 1] - 1])) <
-            1e-9) {
+        std::abs(cross(B.world_edge_dir[v], B.world_edge_dir[B.prev_vertex(b, v)])) < 1e-9) {
       B.convex[v] = 1, B.arc_radius[v] = 0.0, B.round_length[v] = 0.0;
       B.local_arc_centre[v] = B.local_vertex[v], B.world_arc_centre[v] = B.world_vertex[v];
     }
@@ -276,8 +274,7 @@ std::vector<double> node_timesteps(const Model& m) {
     for (size_t b = 0; b < B.size(); ++b) {
       if (!B.deformable[b]) continue;
       for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
-        const uint32_t prev = v > B.vert_begin[b] ? v - 1 : B.vert_begin[b + 1] - 1;
-        const double share = 0.5 * (B.edge_length[v] + B.edge_length[prev]);
+        const double share = B.vertex_share(b, v);
         const auto n = static_cast<size_t>(B.node[v]);
         if (c.mass[n] > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (kmax * share)));
       }

@@ -61,6 +61,14 @@ struct Blocks {
 
   size_t size() const { return x.size(); }
   uint32_t vertex_count(size_t b) const { return vert_begin[b + 1] - vert_begin[b]; }
+  // The vertex before v around block b's outline.
+  uint32_t prev_vertex(size_t b, uint32_t v) const {
+    return v > vert_begin[b] ? v - 1 : vert_begin[b + 1] - 1;
+  }
+  // The stretch of outline vertex v stands for: half of each edge meeting there.
+  double vertex_share(size_t b, uint32_t v) const {
+    return 0.5 * (edge_length[v] + edge_length[prev_vertex(b, v)]);
+  }
   // Adds a block from counter-clockwise vertices; returns its index.
   size_t add(const std::vector<Vec2>& ccw_pts, double rounding, double density, int group_id,
              int material_id, const std::vector<int>& edge_tags = {});
