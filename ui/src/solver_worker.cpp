@@ -106,11 +106,23 @@ void SolverWorker::openFile(const QString& path, const QString& outDir) {
 
 void SolverWorker::execute(const QString& line) {
   auto before = std::make_unique<SavePoint>(interp_->save_point());
-  // Kept before `finished` is emitted, so the window may undo as soon as it hears; a stopped
-  // run counts (it changed the model, and the window journals it).
+  // One copy of the model serves undo and rollback: the interpreter's own is needed only for
+  // 'call', whose lines are rolled back one by one.
+  const bool call = line.trimmed().section(' ', 0, 0) == "call";
+  interp_->set_rollback(call);
+  // The save point is kept before `finished` is emitted, so the window may undo as soon as it
+  // hears; a stopped run counts (it changed the model, and the window journals it).
   run(line, [&] {
     emit logLine("> " + line, false);
-    interp_->execute(line.toStdString(), "<console>", ++console_line_);
+    try {
+      interp_->execute(line.toStdString(), "<console>", ++console_line_);
+    } catch (const std::exception&) {
+      if (!call) {
+        interp_->restore(*before);
+        emit logLine("the model is as it was before this command", false);
+      }
+      throw;
+    }
     undo_.push_back(std::move(before));
     double bytes = 0;
     for (const auto& p : undo_) bytes += approx_bytes(p->model);
@@ -120,6 +132,7 @@ void SolverWorker::execute(const QString& line) {
     }
     emit undoDepth(static_cast<int>(undo_.size()));
   });
+  interp_->set_rollback(true);
 }
 
 void SolverWorker::undo() {
