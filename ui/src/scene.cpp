@@ -34,9 +34,9 @@ double block_value(const SnapshotBlock& b, ColourBy c) {
 }
 
 double zone_value(const SnapshotZone& z, ColourBy c) {
-  ZoneStress s{z.sxx, z.syy, z.sxy, z.szz};
   double s1 = 0, s3 = 0;
-  principal_stresses(s, s1, s3);
+  if (c == ColourBy::kSigma1 || c == ColourBy::kSigma3)
+    principal_stresses(ZoneStress{z.sxx, z.syy, z.sxy, z.szz}, s1, s3);
   switch (c) {
     case ColourBy::kSxx:
       return z.sxx / 1e6;
