@@ -68,6 +68,15 @@ QColor pixel_at(VtkView* view, const QImage& img, double x, double y) {
   return img.pixelColor(int(p.x() * r), int(p.y() * r));
 }
 
+// Shows the window, opens a script in it and waits until the script has run; false if any
+// step fails.
+bool open_shown(MainWindow& w, const QString& path) {
+  w.show();
+  if (!QTest::qWaitForWindowExposed(&w)) return false;
+  w.openScript(path);
+  return wait_finished(w);
+}
+
 bool close_to(QColor c, Rgb expected, int tol = 12) {
   return std::abs(c.red() - expected.r) <= tol && std::abs(c.green() - expected.g) <= tol &&
          std::abs(c.blue() - expected.b) <= tol;
@@ -113,10 +122,7 @@ class TestGui : public QObject {
   // a cycle boundary and the model can be stepped on.
   void runsOnWorkerThread() {
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(script_);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, script_));
     QVERIFY(w.snapshot());
     QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
     // A timer on the UI thread: its ticks must keep coming while the solver runs.
@@ -174,10 +180,7 @@ class TestGui : public QObject {
   // The view draws each group in its palette colour at the blocks' centres, white outside.
   void framebufferShowsGroupColours() {
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(script_);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, script_));
     ViewOptions o;
     o.colour = ColourBy::kGroup;
     o.contacts = ContactShow::kOff;
@@ -226,10 +229,7 @@ class TestGui : public QObject {
                      "gravity 0 -10\nsolve ratio=1e-5 cycles=100000\n");
     QVERIFY(!path.isEmpty());
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(path);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, path));
     ViewOptions o;
     o.colour = ColourBy::kSyy;
     o.contacts = ContactShow::kOff;
@@ -318,10 +318,7 @@ class TestGui : public QObject {
                      "block 0,1 1.9,1 1.9,3 0,3 group=left material=stone\n");
     QVERIFY(!path.isEmpty());
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(path);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, path));
     w.view()->resetCamera();
     QTest::qWait(50);
     w.setDrawingDefaults(0.25, "top", "stone");
@@ -384,10 +381,7 @@ class TestGui : public QObject {
   // stops the run and is marked.
   void runsAnExcavationSequence() {
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(script_);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, script_));
     PlannedStage remove;
     remove.name = "remove the right block";
     remove.commands = QStringList{"delete group=right"};
@@ -455,10 +449,7 @@ class TestGui : public QObject {
                      "joint assign joints\nregion 0,0 10,6 group=rock material=rock\n");
     QVERIFY(!path.isEmpty());
     MainWindow w;
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.openScript(path);
-    QVERIFY(wait_finished(w));
+    QVERIFY(open_shown(w, path));
     w.view()->resetCamera();
     QTest::qWait(50);
     // Openings and generators preview their outlines; cancelled, nothing runs.

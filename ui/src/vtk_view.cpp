@@ -72,6 +72,14 @@ void set_direct_colours(vtkActor* actor, vtkPolyData* pd) {
   actor->SetMapper(mapper);
 }
 
+// Lines in one colour and width (arrows, rubber band, previews, selection).
+void set_line_colour(vtkActor* actor, vtkPolyData* pd, double r, double g, double b, double width) {
+  set_direct_colours(actor, pd);
+  actor->GetMapper()->ScalarVisibilityOff();
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+}
+
 void style_text(vtkTextActor* t, int size, bool bold) {
   t->GetTextProperty()->SetColor(0, 0, 0);
   t->GetTextProperty()->SetFontSize(size);
@@ -93,23 +101,11 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   edges_actor_->GetProperty()->SetRepresentationToWireframe();
   edges_actor_->GetProperty()->SetColor(0.25, 0.25, 0.25);
   set_direct_colours(bars_actor_, bars_);
-  set_direct_colours(arrows_actor_, arrows_);
-  arrows_actor_->GetMapper()->ScalarVisibilityOff();
-  arrows_actor_->GetProperty()->SetColor(0, 0, 0);
-  arrows_actor_->GetProperty()->SetLineWidth(1.5);
-  set_direct_colours(band_actor_, band_);
-  band_actor_->GetMapper()->ScalarVisibilityOff();
-  band_actor_->GetProperty()->SetColor(0.85, 0.1, 0.1);
-  band_actor_->GetProperty()->SetLineWidth(2.0);
+  set_line_colour(arrows_actor_, arrows_, 0, 0, 0, 1.5);
+  set_line_colour(band_actor_, band_, 0.85, 0.1, 0.1, 2.0);
   band_actor_->GetProperty()->SetPointSize(7.0);
-  set_direct_colours(preview_actor_, preview_);
-  preview_actor_->GetMapper()->ScalarVisibilityOff();
-  preview_actor_->GetProperty()->SetColor(0.1, 0.3, 0.9);
-  preview_actor_->GetProperty()->SetLineWidth(1.5);
-  set_direct_colours(highlight_actor_, highlight_);
-  highlight_actor_->GetMapper()->ScalarVisibilityOff();
-  highlight_actor_->GetProperty()->SetColor(1.0, 0.55, 0.0);
-  highlight_actor_->GetProperty()->SetLineWidth(3.0);
+  set_line_colour(preview_actor_, preview_, 0.1, 0.3, 0.9, 1.5);
+  set_line_colour(highlight_actor_, highlight_, 1.0, 0.55, 0.0, 3.0);
   for (vtkActor* a :
        {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(), bars_actor_.Get(),
         arrows_actor_.Get(), band_actor_.Get(), preview_actor_.Get(), highlight_actor_.Get()}) {
