@@ -192,6 +192,24 @@ class TestDeformable : public QObject {
     QVERIFY(scaled.model().dt > 2 * plain.model().dt);
   }
 
+  // Excavating a finely zoned block (100,000 zones) removes all its nodes, and a history node of
+  // another block follows its renumbering (it read the block's outline mean, 12.5, before).
+  void excavationRemovesEveryNode() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define rock density=2500 E=10e9 nu=0.25\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "block 0,0 10,0 10,10 0,10 group=big material=rock\n"
+        "block 12,0 13,0 13,1 12,1 group=small material=rock\n"
+        "zone generate edge=0.07 group=big\nzone generate edge=0.25 group=small\n"
+        "history xpos at=12.9,0.9 label=corner\nhistory interval 1\n"
+        "delete group=big\nstep 1");
+    const Continuum& c = r.model().continuum;
+    QVERIFY(c.node_count() > 0 && c.node_count() < 100);
+    for (const Vec2& p : c.pos) QVERIFY(p.x() > 11.9 && p.y() < 1.1);
+    QVERIFY(std::abs(last(r.model(), "corner") - 13.0) < 1e-6);
+  }
+
   // Two joints through the square, very stiff and strong: the same displacements as intact.
   void jointedSameAsIntact() {
     ScriptRun intact, jointed;
