@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "tessera/solver.hpp"
+#include "tessera/solver3.hpp"
 
 namespace tessera {
 
@@ -17,7 +18,36 @@ std::string Finding::text() const {
   return buf + message;
 }
 
+namespace {
+// 3D models: blocks too small or too thin (3 volume / surface) for the contact tolerance, and
+// overlapping blocks.
+std::vector<Finding> check_geometry3(const Model& m, const CheckLimits& lim) {
+  const Blocks3& B = m.blocks3;
+  const double d = m.tolerance();
+  const double min_volume = lim.min_area > 0.0 ? lim.min_area : 8.0 * d * d * d;
+  const double min_thick = lim.min_thickness > 0.0 ? lim.min_thickness : d;
+  std::vector<Finding> out;
+  char buf[160];
+  for (size_t b = 0; b < B.size(); ++b) {
+    const Vec3& c = B.body[b].position;
+    const double thickness = 3.0 * B.volume[b] / B.surface[b];
+    if (B.volume[b] < min_volume) {
+      std::snprintf(buf, sizeof buf, "volume %.3g is below the limit %.3g", B.volume[b],
+                    min_volume);
+      out.push_back({true, B.id[b], Vec2(c.x(), c.y()), buf});
+    } else if (thickness < min_thick) {
+      std::snprintf(buf, sizeof buf, "thickness %.3g (3 volume / surface) is below the limit %.3g",
+                    thickness, min_thick);
+      out.push_back({false, B.id[b], Vec2(c.x(), c.y()), buf});
+    }
+  }
+  if (const std::string o = find_overlap3(m); !o.empty()) out.push_back({true, 0, Vec2::Zero(), o});
+  return out;
+}
+}  // namespace
+
 std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
+  if (m.dim == 3) return check_geometry3(m, lim);
   const Blocks& B = m.blocks;
   const double d = m.settings.rounding;
   const double min_area = lim.min_area > 0.0 ? lim.min_area : 4.0 * d * d;

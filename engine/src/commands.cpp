@@ -13,43 +13,25 @@ namespace tessera {
 
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
   static const std::map<std::string, Handler> h{
-      {"title", &Interpreter::cmd_title},
-      {"set", &Interpreter::cmd_set},
-      {"print", &Interpreter::cmd_print},
-      {"round", &Interpreter::cmd_round},
-      {"tolerance", &Interpreter::cmd_tolerance},
-      {"threads", &Interpreter::cmd_threads},
-      {"material", &Interpreter::cmd_material},
-      {"joint", &Interpreter::cmd_joint},
-      {"block", &Interpreter::cmd_block},
-      {"group", &Interpreter::cmd_group},
-      {"fix", &Interpreter::cmd_fix},
-      {"free", &Interpreter::cmd_free},
-      {"velocity", &Interpreter::cmd_velocity},
-      {"gravity", &Interpreter::cmd_gravity},
-      {"damping", &Interpreter::cmd_damping},
-      {"timestep", &Interpreter::cmd_timestep},
-      {"step", &Interpreter::cmd_step},
-      {"solve", &Interpreter::cmd_solve},
-      {"history", &Interpreter::cmd_history},
-      {"vtk", &Interpreter::cmd_vtk},
-      {"figure", &Interpreter::cmd_figure},
-      {"save", &Interpreter::cmd_save},
-      {"restore", &Interpreter::cmd_restore},
-      {"call", &Interpreter::cmd_call},
-      {"wall", &Interpreter::cmd_wall},
-      {"region", &Interpreter::cmd_region},
-      {"crack", &Interpreter::cmd_crack},
-      {"jset", &Interpreter::cmd_jset},
-      {"tunnel", &Interpreter::cmd_tunnel},
-      {"voronoi", &Interpreter::cmd_voronoi},
-      {"arch", &Interpreter::cmd_arch},
-      {"delete", &Interpreter::cmd_delete},
-      {"join", &Interpreter::cmd_join},
-      {"check", &Interpreter::cmd_check},
-      {"reset", &Interpreter::cmd_reset},
-      {"zone", &Interpreter::cmd_zone},
-      {"boundary", &Interpreter::cmd_boundary},
+      {"title", &Interpreter::cmd_title},       {"dimension", &Interpreter::cmd_dimension},
+      {"set", &Interpreter::cmd_set},           {"print", &Interpreter::cmd_print},
+      {"round", &Interpreter::cmd_round},       {"tolerance", &Interpreter::cmd_tolerance},
+      {"threads", &Interpreter::cmd_threads},   {"material", &Interpreter::cmd_material},
+      {"joint", &Interpreter::cmd_joint},       {"block", &Interpreter::cmd_block},
+      {"group", &Interpreter::cmd_group},       {"fix", &Interpreter::cmd_fix},
+      {"free", &Interpreter::cmd_free},         {"velocity", &Interpreter::cmd_velocity},
+      {"gravity", &Interpreter::cmd_gravity},   {"damping", &Interpreter::cmd_damping},
+      {"timestep", &Interpreter::cmd_timestep}, {"step", &Interpreter::cmd_step},
+      {"solve", &Interpreter::cmd_solve},       {"history", &Interpreter::cmd_history},
+      {"vtk", &Interpreter::cmd_vtk},           {"figure", &Interpreter::cmd_figure},
+      {"save", &Interpreter::cmd_save},         {"restore", &Interpreter::cmd_restore},
+      {"call", &Interpreter::cmd_call},         {"wall", &Interpreter::cmd_wall},
+      {"region", &Interpreter::cmd_region},     {"crack", &Interpreter::cmd_crack},
+      {"jset", &Interpreter::cmd_jset},         {"tunnel", &Interpreter::cmd_tunnel},
+      {"voronoi", &Interpreter::cmd_voronoi},   {"arch", &Interpreter::cmd_arch},
+      {"delete", &Interpreter::cmd_delete},     {"join", &Interpreter::cmd_join},
+      {"check", &Interpreter::cmd_check},       {"reset", &Interpreter::cmd_reset},
+      {"zone", &Interpreter::cmd_zone},         {"boundary", &Interpreter::cmd_boundary},
       {"insitu", &Interpreter::cmd_insitu},
   };
   return h;
@@ -176,6 +158,8 @@ void Interpreter::cmd_material(Args& a) {
     model_.materials[static_cast<size_t>(k)].zone = zone;
     for (size_t b = 0; b < model_.blocks.size(); ++b)
       if (model_.blocks.material[b] == k) model_.blocks.set_density(b, rho);
+    for (size_t b = 0; b < model_.blocks3.size(); ++b)
+      if (model_.blocks3.material[b] == k) model_.blocks3.set_density(b, rho);
     if (model_.continuum.zone_count() > 0) {
       sync_zone_materials(model_);
       lump_masses(model_.continuum);
@@ -190,9 +174,14 @@ void Interpreter::cmd_material(Args& a) {
     }
     const auto sel = select(a);
     done(a);
+    const double rho_k = model_.materials[static_cast<size_t>(k)].density;
     for (size_t b : sel) {
+      if (model_.dim == 3) {
+        model_.blocks3.material[b] = k, model_.blocks3.set_density(b, rho_k);
+        continue;
+      }
       model_.blocks.material[b] = k;
-      model_.blocks.set_density(b, model_.materials[static_cast<size_t>(k)].density);
+      model_.blocks.set_density(b, rho_k);
     }
     model_.touch();
   } else {
@@ -275,6 +264,9 @@ void Interpreter::cmd_joint(Args& a) {
           model_.joint_for(model_.contacts.a[i], model_.contacts.b[i], model_.contacts.tag[i]);
       if (j >= 0) model_.contacts.joint[i] = static_cast<uint32_t>(j);
     }
+    for (Contact3& c : model_.contacts3)
+      if (const int j = model_.joint_for(c.a, c.b, c.tag); j >= 0)
+        c.joint = static_cast<uint32_t>(j);
     model_.touch();
   } else {
     fail("'" + verb + "' is not a verb of 'joint' (define or assign)");
@@ -350,7 +342,7 @@ void Interpreter::cmd_group(Args& a) {
   const auto sel = select(a);
   done(a);
   const int g = model_.group_index(name, true);
-  for (size_t b : sel) model_.blocks.group[b] = g;
+  for (size_t b : sel) (model_.dim == 3 ? model_.blocks3.group : model_.blocks.group)[b] = g;
   model_.touch();
 }
 

@@ -5,33 +5,16 @@
 #include <cmath>
 #include <limits>
 
+#include "stage_timer.hpp"
 #include "tessera/contact_geometry.hpp"
 #include "tessera/deformable.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/solver.hpp"
+#include "tessera/solver3.hpp"
 
 namespace tessera {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Times one stage into the profile, if any.
-class StageTimer {
- public:
-  explicit StageTimer(int stage) : stage_(stage), t0_(Clock::now()) {}
-  ~StageTimer() {
-    if (Profile* p = run_options().profile)
-      p->seconds[static_cast<size_t>(stage_)] +=
-          std::chrono::duration<double>(Clock::now() - t0_).count();
-  }
-  StageTimer(const StageTimer&) = delete;
-  StageTimer& operator=(const StageTimer&) = delete;
-
- private:
-  int stage_;
-  Clock::time_point t0_;
-};
 
 // Velocity of a block's material point p.
 inline Vec2 point_velocity(const Blocks& B, uint32_t b, const Vec2& p) {
@@ -381,6 +364,7 @@ RunOptions& run_options() {
 
 double compute_timestep(const Model& m) {
   if (m.settings.dt_fixed > 0.0) return m.settings.dt_fixed;
+  if (m.dim == 3) return compute_timestep3(m);
   double kmax = 0.0;
   for (const JointProperties& j : m.joints) kmax = std::max({kmax, j.kn, j.ks});
   const Blocks& B = m.blocks;
@@ -400,6 +384,7 @@ double compute_timestep(const Model& m) {
 }
 
 void prepare(Model& m) {
+  if (m.dim == 3) return prepare3(m);
   if (m.blocks.size() == 0) throw ModelError("the model has no blocks");
   if (m.joints.empty()) throw ModelError("no joint properties are defined (use 'joint define')");
   if (m.settings.rounding <= 0.0) throw ModelError("the rounding length is not set (use 'round')");
@@ -421,6 +406,7 @@ void update_contact_geometry(Model& m) {
 }
 
 void cycle(Model& m) {
+  if (m.dim == 3) return cycle3(m);
   {
     StageTimer t(kStageDetect);
     if (m.detection_due) detect_contacts(m);
@@ -445,6 +431,7 @@ void cycle(Model& m) {
 }
 
 double kinetic_energy(const Model& m) {
+  if (m.dim == 3) return kinetic_energy3(m);
   const Blocks& B = m.blocks;
   return 0.5 * deterministic_sum(B.size(), [&](size_t b) {
            return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +

@@ -33,7 +33,8 @@ std::pair<double, double> Interpreter::mean_sd(const std::string& text) const {
 }
 
 std::vector<size_t> Interpreter::optional_selection(Args& a) {
-  for (const char* k : {"x", "y", "group", "block", "at", "circle", "polygon", "joints", "smaller"})
+  for (const char* k :
+       {"x", "y", "z", "group", "block", "at", "circle", "polygon", "joints", "smaller"})
     for (const auto& kv : a.keys)
       if (kv.first == k) return select(a, true);
   if (std::find(a.words.begin(), a.words.end(), "all") != a.words.end()) return select(a, true);

@@ -11,12 +11,45 @@
 namespace tessera {
 
 namespace {
+// A quantity of block b of a 3D model: rotation is the angle turned since it was made (radians),
+// angvel the magnitude of the angular velocity.
+double history_value3(const Model& m, HistoryQuantity q, size_t b) {
+  const Blocks3& B = m.blocks3;
+  const RigidBody3& body = B.body[b];
+  switch (q) {
+    case HistoryQuantity::kXDisp:
+    case HistoryQuantity::kYDisp:
+    case HistoryQuantity::kZDisp: {
+      const int k = q == HistoryQuantity::kXDisp ? 0 : q == HistoryQuantity::kYDisp ? 1 : 2;
+      return body.position[k] - B.ref[b][k];
+    }
+    case HistoryQuantity::kXVel:
+      return body.velocity.x();
+    case HistoryQuantity::kYVel:
+      return body.velocity.y();
+    case HistoryQuantity::kZVel:
+      return body.velocity.z();
+    case HistoryQuantity::kXPos:
+      return body.position.x();
+    case HistoryQuantity::kYPos:
+      return body.position.y();
+    case HistoryQuantity::kZPos:
+      return body.position.z();
+    case HistoryQuantity::kRotation:
+      return 2.0 * std::acos(std::min(1.0, std::abs(body.orientation.dot(B.ref_q[b]))));
+    case HistoryQuantity::kAngVel:
+      return body.angular_velocity().norm();
+    default:
+      return 0.0;
+  }
+}
+
 struct QuantityName {
   HistoryQuantity q;
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 13> kNames{{
+constexpr std::array<QuantityName, 16> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -30,6 +63,9 @@ constexpr std::array<QuantityName, 13> kNames{{
     {HistoryQuantity::kKinetic, "kinetic", false},
     {HistoryQuantity::kTime, "time", false},
     {HistoryQuantity::kTimestep, "timestep", false},
+    {HistoryQuantity::kZDisp, "zdisp", true},
+    {HistoryQuantity::kZVel, "zvel", true},
+    {HistoryQuantity::kZPos, "zpos", true},
 }};
 }  // namespace
 
@@ -65,6 +101,7 @@ double history_value(const Model& m, const HistorySeries& s) {
   // A block history whose block was deleted (-2) reads NaN from then on.
   if (s.block == -2) return std::nan("");
   const auto b = static_cast<size_t>(std::max(0, s.block));
+  if (m.dim == 3 && s.block >= 0) return history_value3(m, s.quantity, b);
   // Deformable blocks: a node's displacement, velocity and position, or (for the block as a
   // whole) their means over its outline nodes; no rotation.
   const bool one_node = s.node >= 0 && static_cast<size_t>(s.node) < m.continuum.node_count();
@@ -127,6 +164,8 @@ double history_value(const Model& m, const HistorySeries& s) {
       return m.time;
     case HistoryQuantity::kTimestep:
       return m.dt;
+    default:
+      break;
   }
   return 0.0;
 }

@@ -16,7 +16,7 @@ namespace {
 class CoulombLaw final : public JointLaw {
  public:
   const char* name() const override { return "coulomb"; }
-  void update(const JointProperties& p, double L, double overlap, double dus,
+  void update(const JointProperties& p, double L, double overlap, double dus, double dus2,
               JointState& s) const override {
     const bool bonded = s.flags & kBonded;
     s.flags &= static_cast<uint8_t>(~(kSlipping | kTouching));
@@ -25,7 +25,7 @@ class CoulombLaw final : public JointLaw {
     s.un_prev = un;
     // Open and unbonded: no force, and shear history is forgotten.
     if (!bonded && un <= 0.0) {
-      s.fn = 0.0, s.fs = 0.0;
+      s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
       return;
     }
     s.flags |= kTouching;
@@ -39,24 +39,36 @@ class CoulombLaw final : public JointLaw {
     // Tensile failure breaks the bond for good.
     if (bonded && s.fn < -p.tension * L) {
       s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);
-      s.fn = 0.0, s.fs = 0.0;
+      s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
       return;
     }
     s.fs -= p.ks * L * dus;
+    s.fs2 -= p.ks * L * dus2;
     s.shear_disp += dus;
+    s.shear_disp2 += dus2;
+    // Shear magnitude (the 2D form has one component and stays exact).
+    const bool plane = s.fs2 == 0.0;
+    const double mag = plane ? std::abs(s.fs) : std::hypot(s.fs, s.fs2);
     double limit = (bonded ? p.cohesion * L : 0.0) + s.fn * p.tan_friction;
-    if (std::abs(s.fs) > std::max(limit, 0.0)) {
+    if (mag > std::max(limit, 0.0)) {
       // Shear failure of a bond leaves friction only.
       if (bonded) {
         s.flags = static_cast<uint8_t>((s.flags & ~kBonded) | kBroken);
         s.fn = std::max(s.fn, 0.0);
         limit = s.fn * p.tan_friction;
       }
-      s.fs = std::copysign(std::max(limit, 0.0), s.fs);
+      // Back to the slip surface along the trial shear's direction.
+      if (plane) {
+        s.fs = std::copysign(std::max(limit, 0.0), s.fs);
+      } else {
+        const double scale = std::max(limit, 0.0) / mag;
+        s.fs *= scale, s.fs2 *= scale;
+      }
       s.flags |= kSlipping;
-      if (p.tan_dilation > 0.0 &&
-          (p.dilation_limit <= 0.0 || std::abs(s.shear_disp) < p.dilation_limit))
-        s.dilation += p.tan_dilation * std::abs(dus);
+      const double travel =
+          plane ? std::abs(s.shear_disp) : std::hypot(s.shear_disp, s.shear_disp2);
+      if (p.tan_dilation > 0.0 && (p.dilation_limit <= 0.0 || travel < p.dilation_limit))
+        s.dilation += p.tan_dilation * (dus2 == 0.0 ? std::abs(dus) : std::hypot(dus, dus2));
     }
   }
 };

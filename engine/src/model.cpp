@@ -23,7 +23,7 @@ int Model::joint_index(const std::string& name) const {
 }
 
 int Model::joint_for(uint32_t a, uint32_t b, int tag) const {
-  const int ga = blocks.group[a], gb = blocks.group[b];
+  const int ga = block_group(a), gb = block_group(b);
   // The last assignment that matches either way round wins.
   for (size_t k = joint_table.size(); k-- > 0;) {
     const JointAssignment& j = joint_table[k];

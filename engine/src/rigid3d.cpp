@@ -36,7 +36,10 @@ void rotate_about(RigidBody3& b, int k, double h) {
 }  // namespace
 
 void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) {
-  b.momentum += 0.5 * dt * torque;
+  // Momenta live at half steps, as in the 2D cycle: a whole kick with the torque at the present
+  // orientation, then the free rotation with the new momentum (a half kick on each side of the
+  // rotation would apply each torque a step late, and the lag feeds energy into rocking).
+  b.momentum += dt * torque;
   // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
   rotate_about(b, 0, 0.5 * dt);
   rotate_about(b, 1, 0.5 * dt);
@@ -44,7 +47,6 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) 
   rotate_about(b, 1, 0.5 * dt);
   rotate_about(b, 0, 0.5 * dt);
   b.orientation.normalize();
-  b.momentum += 0.5 * dt * torque;
   if (b.mass > 0) b.velocity += dt * force / b.mass;
   b.position += dt * b.velocity;
 }

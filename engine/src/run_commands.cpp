@@ -127,11 +127,11 @@ void Interpreter::cmd_history(Args& a) {
     // For a deformable block, its node nearest the point (or the centroid).
     Vec2 where(std::nan(""), std::nan(""));
     for (const auto& kv : a.keys)
-      if (kv.first == "at") where = point(kv.second);
+      if (kv.first == "at" && model_.dim == 2) where = point(kv.second);
     const auto sel = select(a);
     if (sel.size() != 1) fail("a block history needs exactly one block (block=ID or at=X,Y)");
     s.block = static_cast<int32_t>(sel[0]);
-    if (model_.blocks.deformable[sel[0]]) {
+    if (model_.dim == 2 && model_.blocks.deformable[sel[0]]) {
       if (std::isnan(where.x())) where = {model_.blocks.x[sel[0]], model_.blocks.y[sel[0]]};
       const Continuum& c = model_.continuum;
       const std::vector<int> owner = node_owners(model_);
@@ -268,8 +268,9 @@ void Interpreter::finish() {
   j["timestep"] = model_.dt;
   j["wall_seconds"] = summary_.wall_seconds;
   j["final_ratio"] = model_.ratio;
-  j["blocks"] = model_.blocks.size();
-  j["contacts"] = model_.contacts.size();
+  j["dimension"] = model_.dim;
+  j["blocks"] = model_.block_count();
+  j["contacts"] = model_.dim == 3 ? model_.contacts3.size() : model_.contacts.size();
   j["threads"] = thread_count();
   j["warnings"] = summary_.warnings;
   std::ofstream s((fs::path(out_dir_) / "summary.json").string());

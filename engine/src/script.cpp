@@ -134,7 +134,7 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
       a.words.push_back(w);
   }
   a.used.assign(a.keys.size(), false);
-  const auto& h = handlers();
+  const auto& h = model_.dim == 3 ? handlers3() : handlers();
   const auto it = h.find(a.command);
   if (it == h.end()) {
     std::vector<std::string> names;
@@ -189,7 +189,7 @@ double Interpreter::num(const std::string& text) const {
     bool per_block = false;
     if (!parse_history_quantity(f, q, per_block) || !per_block || args.size() != 1) return false;
     const auto id = static_cast<int64_t>(args[0]);
-    if (id < 1 || id > static_cast<int64_t>(model_.blocks.size()))
+    if (id < 1 || id > static_cast<int64_t>(model_.block_count()))
       throw ExprError(f + "(" + std::to_string(id) + "): there is no block " + std::to_string(id));
     v = history_value(model_, {q, static_cast<int32_t>(id - 1), -1, ""});
     return true;
@@ -261,7 +261,9 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   const Blocks& B = model_.blocks;
   std::string v;
   bool any = false;
-  double x0 = -1e300, x1 = 1e300, y0 = -1e300, y1 = 1e300;
+  const Blocks3& B3 = model_.blocks3;
+  const bool three = model_.dim == 3;
+  double x0 = -1e300, x1 = 1e300, y0 = -1e300, y1 = 1e300, z0 = -1e300, z1 = 1e300;
   int group = -2;
   std::vector<size_t> ids;
   if (take(a, "x", v)) {
@@ -272,6 +274,11 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     const Vec2 r = point(v);
     y0 = std::min(r.x(), r.y()), y1 = std::max(r.x(), r.y()), any = true;
   }
+  if (take(a, "z", v)) {
+    if (!three) fail("z= selects blocks of 3D models; this model is 2D");
+    const Vec2 r = point(v);
+    z0 = std::min(r.x(), r.y()), z1 = std::max(r.x(), r.y()), any = true;
+  }
   if (take(a, "group", v)) {
     group = model_.group_index(v, false);
     if (group < 0) fail("there is no group '" + v + "'" + suggest(v, model_.groups));
@@ -280,11 +287,19 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   if (take(a, "block", v)) {
     for (const auto& part : split_top_level(v)) {
       const int64_t id = integer(part, 1);
-      if (id > static_cast<int64_t>(B.size()))
+      if (id > static_cast<int64_t>(model_.block_count()))
         fail("there is no block " + std::to_string(id) + " (the model has " +
-             std::to_string(B.size()) + ")");
+             std::to_string(model_.block_count()) + ")");
       ids.push_back(static_cast<size_t>(id - 1));
     }
+    any = true;
+  }
+  if (three && take(a, "at", v)) {
+    const Vec3 p = point3(v);
+    bool hit = false;
+    for (size_t b = 0; b < B3.size() && !hit; ++b)
+      if (B3.contains(b, p)) ids.push_back(b), hit = true;
+    if (!hit) fail("no block contains the point " + v);
     any = true;
   }
   if (take(a, "at", v)) {
@@ -298,6 +313,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   // Centroid inside a circle X,Y,R or a polygon (X,Y X,Y ...).
   double cx = 0, cy = 0, cr = -1;
   if (take(a, "circle", v)) {
+    if (three) fail("circle= selects blocks of 2D models; in 3D use x=, y=, z= ranges");
     const auto parts = split_top_level(v);
     if (parts.size() != 3) fail("write circle=X,Y,R");
     cx = num(parts[0]), cy = num(parts[1]), cr = num(parts[2]);
@@ -305,6 +321,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   }
   std::vector<Vec2> inside;
   if (take(a, "polygon", v)) {
+    if (three) fail("polygon= selects blocks of 2D models; in 3D use x=, y=, z= ranges");
     std::string body = v;
     if (body.size() >= 2 && body.front() == '(' && body.back() == ')')
       body = body.substr(1, body.size() - 2);
@@ -329,11 +346,23 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   const auto it = std::find(words.begin(), words.end(), "all");
   if (it != words.end()) words.erase(it), any = true;
   if (!any)
-    fail("'" + a.command +
-         "' needs blocks to act on: all, block=ID, at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1");
+    fail("'" + a.command + "' needs blocks to act on: all, block=ID, " +
+         (three ? "at=X,Y,Z, group=NAME, x=X0,X1, y=Y0,Y1, z=Z0,Z1"
+                : "at=X,Y, group=NAME, x=X0,X1, y=Y0,Y1"));
   if (!allow_words && !words.empty())
     fail("unexpected word '" + words[0] + "' after '" + a.command + "'");
   std::vector<size_t> out;
+  for (size_t b = 0; b < B3.size(); ++b) {
+    const Vec3& c = B3.body[b].position;
+    if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;
+    if (group >= -1 && B3.group[b] != group) continue;
+    if (c.x() < x0 || c.x() > x1 || c.y() < y0 || c.y() > y1 || c.z() < z0 || c.z() > z1) continue;
+    if (smaller >= 0.0 && B3.volume[b] >= smaller) continue;
+    const auto t0 = B3.face_tag.begin() + B3.face_begin[b],
+               t1 = B3.face_tag.begin() + B3.face_begin[b + 1];
+    if (joints >= 0 && std::find(t0, t1, joints) == t1) continue;
+    out.push_back(b);
+  }
   for (size_t b = 0; b < B.size(); ++b) {
     if (!ids.empty() && std::find(ids.begin(), ids.end(), b) == ids.end()) continue;
     if (group >= -1 && B.group[b] != group) continue;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace tessera {
 
@@ -38,14 +39,23 @@ void vec2_array(std::ostream& out, const char* name, size_t n, F vec) {
   });
 }
 
-// File header, piece sizes and the points of a PolyData piece of polygons or lines.
+// Space vectors as 3-component tuples.
+template <class F>
+void vec3_array(std::ostream& out, const char* name, size_t n, F vec) {
+  array(out, "Float64", name, 3, n, [&](size_t k) { return vec(k / 3)[static_cast<int>(k % 3)]; });
+}
+
+// File header, piece sizes and the points of a PolyData piece of polygons, lines or vertices.
 template <class F>
 void begin_piece(std::ostream& out, size_t points, size_t cells, const char* cell_kind, F point) {
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
          "byte_order=\"LittleEndian\">\n"
       << "<PolyData>\n<Piece NumberOfPoints=\"" << points << "\" NumberOf" << cell_kind << "=\""
       << cells << "\">\n<Points>\n";
-  vec2_array(out, "Points", points, point);
+  if constexpr (std::is_same_v<std::decay_t<decltype(point(size_t{0}))>, Vec3>)
+    vec3_array(out, "Points", points, point);
+  else
+    vec2_array(out, "Points", points, point);
   out << "</Points>\n";
 }
 
@@ -111,6 +121,73 @@ void write_contacts(const Model& m, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
+// 3D blocks: every face a polygon, carrying its block's data and its own joint tag.
+void write_blocks3(const Model& m, const std::string& path) {
+  const Blocks3& B = m.blocks3;
+  const size_t nf = B.local_normal.size();
+  std::vector<uint32_t> owner(nf);
+  for (uint32_t b = 0; b < B.size(); ++b)
+    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) owner[f] = b;
+  std::ofstream out = open_file(path);
+  begin_piece(out, B.world_vertex.size(), nf, "Polys", [&](size_t v) { return B.world_vertex[v]; });
+  out << "<Polys>\n";
+  array(out, "Int64", "connectivity", 1, B.face_vert.size(),
+        [&](size_t k) { return B.face_vert[k]; });
+  array(out, "Int64", "offsets", 1, nf, [&](size_t f) { return B.fv_begin[f + 1]; });
+  out << "</Polys>\n<CellData Scalars=\"group\">\n";
+  const auto per_block = [&](const char* type, const char* name, auto value) {
+    array(out, type, name, 1, nf, [&](size_t f) { return value(owner[f]); });
+  };
+  per_block("Int32", "id", [&](size_t b) { return B.id[b]; });
+  per_block("Int32", "group", [&](size_t b) { return B.group[b]; });
+  per_block("Int32", "material", [&](size_t b) { return B.material[b]; });
+  per_block("Int32", "fixed", [&](size_t b) { return B.fixity[b]; });
+  array(out, "Int32", "joint_tag", 1, nf, [&](size_t f) { return B.face_tag[f]; });
+  vec3_array(out, "velocity", nf, [&](size_t f) { return B.body[owner[f]].velocity; });
+  vec3_array(out, "displacement", nf,
+             [&](size_t f) { return Vec3(B.body[owner[f]].position - B.ref[owner[f]]); });
+  vec3_array(out, "angular_velocity", nf,
+             [&](size_t f) { return B.body[owner[f]].angular_velocity(); });
+  out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+// 3D sub-contacts as points with their forces, stresses and state.
+void write_contacts3(const Model& m, const std::string& path) {
+  const Blocks3& B = m.blocks3;
+  std::vector<const SubContact*> subs;
+  std::vector<const Contact3*> of;
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& s : c.subs) subs.push_back(&s), of.push_back(&c);
+  const size_t n = subs.size();
+  std::ofstream out = open_file(path);
+  begin_piece(out, n, n, "Verts", [&](size_t i) { return subs[i]->point; });
+  out << "<Verts>\n";
+  array(out, "Int64", "connectivity", 1, n, [](size_t k) { return k; });
+  array(out, "Int64", "offsets", 1, n, [](size_t i) { return i + 1; });
+  out << "</Verts>\n<PointData Scalars=\"normal_stress\">\n";
+  const auto per_area = [&](double f, size_t i) {
+    return subs[i]->area > 0 ? f / subs[i]->area : 0.0;
+  };
+  array(out, "Float64", "normal_force", 1, n, [&](size_t i) { return subs[i]->fn; });
+  array(out, "Float64", "shear_force", 1, n, [&](size_t i) { return subs[i]->fs.norm(); });
+  array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return per_area(subs[i]->fn, i); });
+  array(out, "Float64", "shear_stress", 1, n,
+        [&](size_t i) { return per_area(subs[i]->fs.norm(), i); });
+  array(out, "Float64", "opening", 1, n, [&](size_t i) { return subs[i]->gap; });
+  array(out, "Float64", "area", 1, n, [&](size_t i) { return subs[i]->area; });
+  array(out, "Float64", "shear_displacement", 1, n,
+        [&](size_t i) { return std::hypot(subs[i]->sd1, subs[i]->sd2); });
+  array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(subs[i]->flags); });
+  array(out, "Int32", "contact_type", 1, n, [&](size_t i) { return of[i]->type; });
+  array(out, "Int32", "block_a", 1, n, [&](size_t i) { return B.id[of[i]->a]; });
+  array(out, "Int32", "block_b", 1, n, [&](size_t i) { return B.id[of[i]->b]; });
+  vec3_array(out, "normal", n, [&](size_t i) { return of[i]->normal; });
+  vec3_array(out, "force", n, [&](size_t i) { return subs[i]->force; });
+  out << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
 // Zones of the deformable blocks: nodes as points (with displacement and velocity), zones as
 // triangles with stresses (tension positive), principal stresses, strains and plastic state.
 void write_zones(const Model& m, const std::string& path) {
@@ -169,8 +246,13 @@ void VtkSeries::write(const Model& m) {
     throw std::runtime_error(dir_ + ": cannot create the output folder (" + ec.message() + ")");
   char name[64];
   std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
-  write_blocks(m, dir_ + "/blocks_" + name);
-  write_contacts(m, dir_ + "/contacts_" + name);
+  if (m.dim == 3) {
+    write_blocks3(m, dir_ + "/blocks_" + name);
+    write_contacts3(m, dir_ + "/contacts_" + name);
+  } else {
+    write_blocks(m, dir_ + "/blocks_" + name);
+    write_contacts(m, dir_ + "/contacts_" + name);
+  }
   // Zones from the first snapshot that has them; a collection lists only files that exist.
   if (m.continuum.zone_count() > 0) {
     if (zones_from_ < 0) zones_from_ = static_cast<int>(times_.size());

@@ -23,7 +23,10 @@ enum class HistoryQuantity : uint8_t {
   kUnbalanced,
   kKinetic,
   kTime,
-  kTimestep  // of the model
+  kTimestep,  // of the model
+  kZDisp,
+  kZVel,
+  kZPos  // of a block of a 3D model
 };
 
 struct HistorySeries {

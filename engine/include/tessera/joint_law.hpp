@@ -1,8 +1,10 @@
 // Joint constitutive laws (chapter 5.2.2): stresses on a contact from its relative displacement.
 //
 // Laws are small classes registered by name; a joint property set names its law and carries the
-// parameters. Stiffnesses and strengths are per unit length of joint (2D, unit thickness); a law
-// works on the forces of one contact of length L. Both force components are incremental
+// parameters. Stiffnesses and strengths are per unit area of joint; a law works on the forces of
+// one contact standing for a size L of joint: a length (2D, unit thickness) or an area (a 3D
+// sub-contact). Shear is a vector in the joint plane: two components in 3D, the second zero in
+// 2D (where the law reduces exactly to its scalar form). Both force components are incremental
 // (dFn = kn L dun, dFs = -ks L dus), so a change of L between cycles never makes a force jump and
 // never puts energy into the model. The normal force is held between zero and the total-form
 // value kn L un, so it cannot drift from the overlap.
@@ -38,16 +40,23 @@ struct JointProperties {
 struct JointState {
   double fn = 0.0, fs = 0.0, un_prev = 0.0, dilation = 0.0, shear_disp = 0.0;
   uint8_t flags = 0;
+  // Second shear component (3D): force and total displacement.
+  double fs2 = 0.0, shear_disp2 = 0.0;
 };
 
 class JointLaw {
  public:
   virtual ~JointLaw() = default;
   virtual const char* name() const = 0;
-  // length: the contact's share of joint; overlap: current overlap (negative gap); dus: shear
-  // displacement increment of the owner relative to the other block.
-  virtual void update(const JointProperties& p, double length, double overlap, double dus,
-                      JointState& s) const = 0;
+  // size: the contact's share of joint (length or area); overlap: current overlap (negative
+  // gap); dus, dus2: shear displacement increment of the owner relative to the other block.
+  virtual void update(const JointProperties& p, double size, double overlap, double dus,
+                      double dus2, JointState& s) const = 0;
+  // The 2D form: one shear component.
+  void update(const JointProperties& p, double length, double overlap, double dus,
+              JointState& s) const {
+    update(p, length, overlap, dus, 0.0, s);
+  }
 };
 
 // The law registered under a name, or nullptr.

@@ -1,4 +1,4 @@
-// The whole state of a 2D rigid-block model: blocks, contacts, properties, settings, clock.
+// The whole state of a model, 2D or 3D: blocks, contacts, properties, settings, clock.
 //
 // Everything needed to continue a run bit for bit lives here and is written by save(); the
 // cycle (solver.hpp) is a set of free functions over this state.
@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "tessera/blocks.hpp"
+#include "tessera/blocks3.hpp"
 #include "tessera/contacts.hpp"
+#include "tessera/contacts3.hpp"
 #include "tessera/continuum.hpp"
 #include "tessera/history.hpp"
 #include "tessera/joint_law.hpp"
@@ -28,6 +30,7 @@ enum class DampingMode : uint8_t { kLocal = 0, kAdaptiveGlobal = 1, kNone = 2 };
 
 struct Settings {
   Vec2 gravity = Vec2::Zero();
+  Vec3 gravity3 = Vec3::Zero();    // 3D models
   double rounding = 0.0;           // corner rounding length d
   double contact_tolerance = 0.0;  // contacts are tracked within this gap; 0: the rounding length
   DampingMode damping = DampingMode::kLocal;
@@ -49,9 +52,14 @@ struct JointAssignment {
 };
 
 struct Model {
+  // 2 or 3: which block store the model uses (the other stays empty). Materials, joints,
+  // groups, histories, the clock and the settings serve both.
+  uint8_t dim = 2;
   Settings settings;
   Blocks blocks;
   Contacts contacts;
+  Blocks3 blocks3;
+  std::vector<Contact3> contacts3;
   std::vector<Material> materials;
   std::vector<JointProperties> joints;
   std::vector<JointAssignment> joint_table;  // later entries win
@@ -73,11 +81,13 @@ struct Model {
   // Block positions at the last detection pass (Verlet list), and whether one is due.
   std::vector<double> det_x, det_y, det_theta;
   std::vector<Vec2> det_node;
+  std::vector<Vec3> det_pos3;
+  std::vector<Eigen::Quaterniond> det_q3;
   bool detection_due = true;
   uint64_t detection_passes = 0;
 
   // Derived, rebuilt after detection and after restore: contacts touching each block,
-  // as (contact index * 2 + side) with side 0 for a, 1 for b.
+  // as (contact index * 2 + side) with side 0 for a, 1 for b (2D or 3D contacts).
   std::vector<uint32_t> block_contact_begin, block_contacts;
 
   // Group index by name; creates it when asked.
@@ -86,6 +96,8 @@ struct Model {
   int joint_index(const std::string& name) const;
   // Joint property set for a contact between two blocks along a joint of a tag, or -1.
   int joint_for(uint32_t a, uint32_t b, int tag = -1) const;
+  size_t block_count() const { return dim == 3 ? blocks3.size() : blocks.size(); }
+  int block_group(size_t b) const { return dim == 3 ? blocks3.group[b] : blocks.group[b]; }
   // Contact tolerance in force: the user's, or the rounding length.
   double tolerance() const;
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.

@@ -1,5 +1,6 @@
 // Rigid-body motion of a 3D block (chapter 5.3): translation by central differences, rotation
-// as an orientation quaternion moved by the splitting of Dullweber, Reich and Leimkuhler (1997):
+// as an orientation quaternion moved by the splitting of Dullweber, Reich and Leimkuhler (1997)
+// with the angular momentum at half steps:
 // the torque-free part is composed of exact rotations about the principal axes, so angular
 // momentum is kept exactly and kinetic energy to O(dt^2) without drift, and the orientation
 // stays a rotation (the quaternion is renormalised, so the shape cannot shear).
@@ -26,8 +27,9 @@ struct RigidBody3 {
 // A body from a polyhedron's properties and a density; `orientation` holds the principal axes.
 RigidBody3 make_body(const SolidProperties& s, double density);
 
-// One step of dt under a force and a torque (world frame, about the centroid) held over the step:
-// half a torque kick, the free rotation, half a kick; then translation.
+// One step of dt under a force and a torque (world frame, about the centroid) at the present
+// position: leapfrog, with velocity and angular momentum at half steps - a torque kick, then
+// the free rotation; a force kick, then translation.
 void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt);
 
 }  // namespace tessera

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tessera/checks.hpp"
+#include "tessera/cutting3.hpp"
 #include "tessera/figure.hpp"
 #include "tessera/model.hpp"
 #include "tessera/solver.hpp"
@@ -118,6 +119,9 @@ class Interpreter {
  private:
   using Handler = void (Interpreter::*)(Args&);
   static const std::map<std::string, Handler>& handlers();
+  // The command table of 3D models: the shared commands, the 3D forms, and the 2D-only ones
+  // answering that they are 2D only (commands3.cpp).
+  static const std::map<std::string, Handler>& handlers3();
 
   // Command handlers (commands.cpp, run_commands.cpp).
   void cmd_title(Args&);
@@ -161,6 +165,24 @@ class Interpreter {
   void cmd_boundary(Args&);
   void cmd_insitu(Args&);
   void cmd_reset(Args&);
+  // 3D models (commands3.cpp).
+  void cmd_dimension(Args&);
+  void cmd_block3(Args&);
+  void cmd_region3(Args&);
+  void cmd_crack3(Args&);
+  void cmd_jset3(Args&);
+  void cmd_wall3(Args&);
+  void cmd_fix3(Args&);
+  void cmd_free3(Args&);
+  void cmd_velocity3(Args&);
+  void cmd_gravity3(Args&);
+  void cmd_delete3(Args&);
+  void cmd_only2d(Args&);
+  Vec3 point3(const std::string& text) const;
+  // Group and material keywords of a new block (group=, material=).
+  std::pair<int, int> group_material(Args& a);
+  // Cuts the selection (all when none is given) by planes named `name`.
+  void cut3(Args& a, std::vector<JointPlane> planes, const std::string& what);
   // Runs the geometry checks; errors fail unless the script said to go on.
   void run_checks(bool before_run);
   // A mean and optional standard deviation written as MEAN or MEAN,SD.

@@ -1,0 +1,67 @@
+// Rigid convex polyhedral blocks in 3D (chapter 5.3.1).
+//
+// Design: per-block motion is a RigidBody3 (quaternion orientation, angular momentum); the shape
+// is stored once in the block's principal frame about its centroid, and world positions of
+// vertices, face normals and edge directions are a cache refreshed after each step. Faces list
+// their vertices counter-clockwise seen from outside as global vertex indices; each face keeps
+// the joint tag of the cut that made it. The distinct edge directions of a block are kept apart
+// (a box has three): the common-plane search needs only directions, not edges.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/polyhedron.hpp"
+#include "tessera/rigid3d.hpp"
+
+namespace tessera {
+
+// Which degrees of freedom of a 3D block are held at a prescribed velocity.
+enum Fixity3 : uint8_t { kFix3X = 1, kFix3Y = 2, kFix3Z = 4, kFix3Rot = 8, kFix3All = 15 };
+
+struct Blocks3 {
+  std::vector<RigidBody3> body;
+  // Force and torque (about the centroid) of the current cycle, and the sum of the magnitudes
+  // of all forces applied (for the unbalanced-force ratio).
+  std::vector<Vec3> force, torque;
+  std::vector<double> applied;
+  // Centroid and orientation at creation, for displacements; fixity and prescribed velocities.
+  std::vector<Vec3> ref;
+  std::vector<Eigen::Quaterniond> ref_q;
+  std::vector<uint8_t> fixity;
+  std::vector<Vec3> fixed_v, fixed_w;
+  // Geometry: volume, surface area, largest centroid-to-vertex distance.
+  std::vector<double> volume, surface, bound_radius;
+  // Vertices of block b are [vert_begin[b], vert_begin[b+1]).
+  std::vector<uint32_t> vert_begin{0};
+  std::vector<Vec3> local_vertex, world_vertex;
+  // Faces of block b are [face_begin[b], face_begin[b+1]); face f's vertices are
+  // face_vert[fv_begin[f] .. fv_begin[f+1]) (global vertex indices, counter-clockwise outside).
+  std::vector<uint32_t> face_begin{0}, fv_begin{0}, face_vert;
+  std::vector<Vec3> local_normal, world_normal;
+  std::vector<double> world_offset;  // world_normal . x on the face plane
+  std::vector<int> face_tag;
+  // Distinct edge directions of block b: [dir_begin[b], dir_begin[b+1]).
+  std::vector<uint32_t> dir_begin{0};
+  std::vector<Vec3> local_dir, world_dir;
+  // Cold data.
+  std::vector<int> group, material, id;
+
+  size_t size() const { return body.size(); }
+  // Adds a convex block from a polyhedron in world coordinates; face_tags per face (or empty).
+  // Throws std::invalid_argument if the polyhedron is open, flat or not convex.
+  size_t add(const Polyhedron& world, double density, int group_id, int material_id,
+             const std::vector<int>& face_tags = {});
+  // Removes the blocks whose flag is set; returns the new index of every old block (-1: gone).
+  std::vector<int> remove(const std::vector<uint8_t>& doomed);
+  void set_density(size_t b, double density);
+  // Refreshes the world cache of block b from its position and orientation.
+  void update_world(size_t b);
+  // The block's surface in world coordinates (vertex indices local to the block).
+  Polyhedron polyhedron(size_t b) const;
+  // Whether a world point lies inside block b (on the surface counts).
+  bool contains(size_t b, const Vec3& p) const;
+};
+
+}  // namespace tessera

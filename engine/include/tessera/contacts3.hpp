@@ -1,0 +1,73 @@
+// Contacts between 3D blocks (chapter 5.3.2): Cundall's common plane and its sub-contacts.
+//
+// Design. A contact is one pair of blocks (a < b) within the contact tolerance. Its common plane
+// (CP) bisects the space between them with the normal from b towards a; of all planes it is the
+// one that maximises the gap, or minimises the overlap: the largest over unit normals n of
+//   gap(n) = min over a's vertices of n.x  -  max over b's vertices of n.x.
+// For convex blocks that maximum, while they overlap, lies at a face normal of either block or
+// at a cross product of an edge direction of each (the separating-axis candidates); while they
+// are apart it is at least the best candidate's value. Detection passes search every candidate;
+// each cycle moves the plane with the blocks by re-evaluating the candidate found (its
+// direction turns continuously with the blocks), so the normal never jumps between passes.
+//
+// Sub-contacts. Each block's face that faces the plane (outward normal most nearly against its
+// side of the plane, kept while no other face is better by a margin) is projected onto the CP;
+// the two projections overlap in a convex polygon whose corners are the sub-contacts: vertices
+// of a's face inside b's (vertex-to-face), vertices of b's face inside a's (face-to-vertex) and
+// crossings of their edges (edge-to-edge) - the union of 3DEC's two sub-contact sets, each point
+// once, so no halving of forces is needed. Each takes half of the two fan triangles (from the
+// polygon's centroid) beside it as its area, so the areas add up to the contact area; its gap is
+// measured between the two faces along the normal. A sub-contact keeps its joint state from
+// cycle to cycle by its key (which features make it), or failing that by its position in a's
+// frame, so shear force survives while the overlap polygon changes shape.
+//
+// The shear force is a vector in the CP, kept in world coordinates and turned with the plane each
+// cycle (its magnitude kept); the joint law sees it in the plane's two tangent directions.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tessera/polyhedron.hpp"
+
+namespace tessera {
+
+// How the best common-plane candidate was found: a face of b, a face of a, or an edge
+// direction of each.
+enum PlaneKind : uint8_t { kPlaneFaceB = 0, kPlaneFaceA = 1, kPlaneEdges = 2 };
+// What touches, from how many vertices of each block lie within the tolerance of the plane.
+enum ContactType3 : uint8_t { kVertexFace = 0, kEdgeEdge = 1, kEdgeFace = 2, kFaceFace = 3 };
+
+struct SubContact {
+  uint64_t key = 0;
+  Vec3 point = Vec3::Zero();    // on the common plane
+  Vec3 local_a = Vec3::Zero();  // the point in a's body frame (for matching next cycle)
+  double area = 0.0, gap = 0.0;
+  // Joint law state: normal force (compression positive), world shear force on a, normal
+  // displacement of the last cycle, dilation, total shear displacement (two components).
+  double fn = 0.0, un_prev = 0.0, dilation = 0.0, sd1 = 0.0, sd2 = 0.0;
+  Vec3 fs = Vec3::Zero();
+  uint8_t flags = 0;
+  Vec3 force = Vec3::Zero();  // on a this cycle
+};
+
+struct Contact3 {
+  uint32_t a = 0, b = 0;
+  uint32_t joint = 0;
+  int tag = -1;
+  // The candidate that gives the plane: its kind and the face or edge-direction indices.
+  uint8_t kind = kPlaneFaceB;
+  uint32_t ia = 0, ib = 0;
+  // The faces of a and b facing the plane (global face indices).
+  uint32_t face_a = 0, face_b = 0;
+  uint8_t type = kFaceFace;
+  Vec3 normal = Vec3::UnitZ();
+  double offset = 0.0, gap = 0.0;  // plane: normal . x = offset
+  std::vector<SubContact> subs;
+  // Resultant on a this cycle (b takes the opposite), with the torques about each centroid, and
+  // the sum of |Fn| + |Fs| over the sub-contacts.
+  Vec3 force = Vec3::Zero(), torque_a = Vec3::Zero(), torque_b = Vec3::Zero();
+  double force_mag = 0.0;
+};
+
+}  // namespace tessera

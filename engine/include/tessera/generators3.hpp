@@ -1,0 +1,35 @@
+// Building 3D models: boxes and prisms, joint planes cut through them, brick walls, deletion.
+#pragma once
+
+#include <vector>
+
+#include "tessera/cutting3.hpp"
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+// Adds a convex block (world coordinates) with the density of its material; returns its index.
+// Throws std::invalid_argument naming what is wrong with the polyhedron.
+size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
+                  const std::vector<int>& face_tags = {});
+
+// Cuts the selected blocks (all if empty) by the planes; pieces take their parent's group,
+// material, fixity and velocity, and the model's blocks are renumbered (uncut blocks first, in
+// order, then the pieces). Returns the number of blocks added.
+size_t cut_model3(Model& m, const std::vector<size_t>& selection,
+                  const std::vector<JointPlane>& planes);
+
+// A running-bond wall one brick thick: courses along x stacked in z, the wall's thickness along
+// y; every second course starts with a half brick.
+struct WallSpec3 {
+  Vec3 origin = Vec3::Zero();
+  double length = 0.0, height = 0.0, width = 0.0;  // of a brick (x, z, y)
+  int courses = 0, bricks = 0;
+  int group = -1, material = -1, bed_tag = -1, head_tag = -1;
+};
+void add_wall3(Model& m, const WallSpec3& w);
+
+// Removes blocks with their contacts; histories of them end, the rest follow the renumbering.
+void delete_blocks3(Model& m, const std::vector<size_t>& blocks);
+
+}  // namespace tessera

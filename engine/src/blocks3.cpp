@@ -1,0 +1,181 @@
+#include "tessera/blocks3.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tessera {
+
+namespace {
+
+// Unit normal of a planar polygon by Newell's method (robust for nearly collinear vertices).
+Vec3 newell_normal(const std::vector<Vec3>& v, const std::vector<uint32_t>& face) {
+  Vec3 n = Vec3::Zero();
+  for (size_t k = 0; k < face.size(); ++k) {
+    const Vec3& p = v[face[k]];
+    const Vec3& q = v[face[(k + 1) % face.size()]];
+    n += Vec3((p.y() - q.y()) * (p.z() + q.z()), (p.z() - q.z()) * (p.x() + q.x()),
+              (p.x() - q.x()) * (p.y() + q.y()));
+  }
+  return n.normalized();
+}
+
+// Copies block b of src onto the end of dst.
+void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
+  dst.body.push_back(src.body[b]);
+  dst.force.push_back(src.force[b]), dst.torque.push_back(src.torque[b]);
+  dst.applied.push_back(src.applied[b]), dst.ref.push_back(src.ref[b]);
+  dst.ref_q.push_back(src.ref_q[b]);
+  dst.fixity.push_back(src.fixity[b]);
+  dst.fixed_v.push_back(src.fixed_v[b]), dst.fixed_w.push_back(src.fixed_w[b]);
+  dst.volume.push_back(src.volume[b]), dst.surface.push_back(src.surface[b]);
+  dst.bound_radius.push_back(src.bound_radius[b]);
+  dst.group.push_back(src.group[b]), dst.material.push_back(src.material[b]);
+  dst.id.push_back(static_cast<int>(dst.id.size()) + 1);
+  const uint32_t v_shift = dst.vert_begin.back() - src.vert_begin[b];
+  for (uint32_t v = src.vert_begin[b]; v < src.vert_begin[b + 1]; ++v)
+    dst.local_vertex.push_back(src.local_vertex[v]),
+        dst.world_vertex.push_back(src.world_vertex[v]);
+  dst.vert_begin.push_back(static_cast<uint32_t>(dst.local_vertex.size()));
+  for (uint32_t f = src.face_begin[b]; f < src.face_begin[b + 1]; ++f) {
+    for (uint32_t k = src.fv_begin[f]; k < src.fv_begin[f + 1]; ++k)
+      dst.face_vert.push_back(src.face_vert[k] + v_shift);
+    dst.fv_begin.push_back(static_cast<uint32_t>(dst.face_vert.size()));
+    dst.local_normal.push_back(src.local_normal[f]),
+        dst.world_normal.push_back(src.world_normal[f]);
+    dst.world_offset.push_back(src.world_offset[f]), dst.face_tag.push_back(src.face_tag[f]);
+  }
+  dst.face_begin.push_back(static_cast<uint32_t>(dst.local_normal.size()));
+  for (uint32_t d = src.dir_begin[b]; d < src.dir_begin[b + 1]; ++d)
+    dst.local_dir.push_back(src.local_dir[d]), dst.world_dir.push_back(src.world_dir[d]);
+  dst.dir_begin.push_back(static_cast<uint32_t>(dst.local_dir.size()));
+}
+
+}  // namespace
+
+size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int material_id,
+                    const std::vector<int>& face_tags) {
+  const SolidProperties s = solid_properties(p);
+  // Convex: every vertex on the inner side of every face plane.
+  double size = 0.0;
+  for (const Vec3& v : p.vertices) size = std::max(size, (v - s.centroid).norm());
+  std::vector<Vec3> normals;
+  for (const auto& face : p.faces) {
+    const Vec3 n = newell_normal(p.vertices, face);
+    const double off = n.dot(p.vertices[face[0]]);
+    for (const Vec3& v : p.vertices)
+      if (n.dot(v) - off > 1e-9 * size)
+        throw std::invalid_argument("the polyhedron is not convex (a vertex lies outside a face)");
+    normals.push_back(n);
+  }
+  const size_t b = size_t(body.size());
+  RigidBody3 rb = make_body(s, density);
+  body.push_back(rb);
+  force.push_back(Vec3::Zero()), torque.push_back(Vec3::Zero()), applied.push_back(0.0);
+  ref.push_back(s.centroid), ref_q.push_back(rb.orientation);
+  fixity.push_back(0), fixed_v.push_back(Vec3::Zero()), fixed_w.push_back(Vec3::Zero());
+  volume.push_back(s.volume);
+  group.push_back(group_id), material.push_back(material_id);
+  id.push_back(static_cast<int>(b) + 1);
+  // Shape in the principal frame about the centroid.
+  const Mat3 to_local = rb.orientation.conjugate().toRotationMatrix();
+  const uint32_t v0 = vert_begin.back();
+  for (const Vec3& v : p.vertices) {
+    local_vertex.push_back(to_local * (v - s.centroid));
+    world_vertex.push_back(v);
+  }
+  vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
+  double area = 0.0;
+  std::vector<Vec3> dirs;
+  for (size_t f = 0; f < p.faces.size(); ++f) {
+    const auto& face = p.faces[f];
+    Vec3 twice = Vec3::Zero();
+    for (size_t k = 0; k < face.size(); ++k) {
+      face_vert.push_back(v0 + face[k]);
+      const Vec3& a = p.vertices[face[k]];
+      const Vec3& c = p.vertices[face[(k + 1) % face.size()]];
+      twice += a.cross(c);
+      // Each undirected edge once: from the face that walks it from lower to higher index.
+      if (face[k] < face[(k + 1) % face.size()]) {
+        const Vec3 d = to_local * (c - a).normalized();
+        if (std::none_of(dirs.begin(), dirs.end(),
+                         [&](const Vec3& e) { return std::abs(e.dot(d)) > 1.0 - 1e-9; }))
+          dirs.push_back(d);
+      }
+    }
+    area += 0.5 * std::abs(twice.dot(normals[f]));
+    fv_begin.push_back(static_cast<uint32_t>(face_vert.size()));
+    local_normal.push_back(to_local * normals[f]);
+    world_normal.push_back(normals[f]);
+    world_offset.push_back(normals[f].dot(p.vertices[face[0]]));
+    face_tag.push_back(f < face_tags.size() ? face_tags[f] : -1);
+  }
+  face_begin.push_back(static_cast<uint32_t>(local_normal.size()));
+  for (const Vec3& d : dirs) local_dir.push_back(d), world_dir.push_back(Vec3::Zero());
+  dir_begin.push_back(static_cast<uint32_t>(local_dir.size()));
+  surface.push_back(area);
+  bound_radius.push_back(size);
+  update_world(b);
+  return b;
+}
+
+std::vector<int> Blocks3::remove(const std::vector<uint8_t>& doomed) {
+  Blocks3 kept;
+  std::vector<int> index(size(), -1);
+  for (size_t b = 0; b < size(); ++b) {
+    if (doomed[b]) continue;
+    index[b] = static_cast<int>(kept.size());
+    append_block(kept, *this, b);
+    kept.id.back() = id[b];
+  }
+  *this = std::move(kept);
+  return index;
+}
+
+void Blocks3::set_density(size_t b, double density) {
+  const double old_mass = body[b].mass;
+  const double new_mass = density * volume[b];
+  // Principal moments scale with the density; a block made with no density gets them anew.
+  if (old_mass > 0.0) {
+    body[b].principal *= new_mass / old_mass;
+    body[b].momentum *= new_mass / old_mass;
+  } else {
+    Polyhedron p = polyhedron(b);
+    const SolidProperties s = solid_properties(p);
+    body[b].principal = density * s.principal_moments;
+  }
+  body[b].mass = new_mass;
+}
+
+void Blocks3::update_world(size_t b) {
+  const Mat3 r = body[b].orientation.toRotationMatrix();
+  const Vec3& c = body[b].position;
+  for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v)
+    world_vertex[v] = c + r * local_vertex[v];
+  for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f) {
+    world_normal[f] = r * local_normal[f];
+    world_offset[f] = world_normal[f].dot(world_vertex[face_vert[fv_begin[f]]]);
+  }
+  for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
+}
+
+Polyhedron Blocks3::polyhedron(size_t b) const {
+  Polyhedron p;
+  const uint32_t v0 = vert_begin[b];
+  for (uint32_t v = v0; v < vert_begin[b + 1]; ++v) p.vertices.push_back(world_vertex[v]);
+  for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f) {
+    std::vector<uint32_t> face;
+    for (uint32_t k = fv_begin[f]; k < fv_begin[f + 1]; ++k) face.push_back(face_vert[k] - v0);
+    p.faces.push_back(std::move(face));
+  }
+  return p;
+}
+
+bool Blocks3::contains(size_t b, const Vec3& p) const {
+  const double eps = 1e-9 * bound_radius[b];
+  for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f)
+    if (world_normal[f].dot(p) - world_offset[f] > eps) return false;
+  return true;
+}
+
+}  // namespace tessera

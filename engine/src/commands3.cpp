@@ -1,0 +1,279 @@
+// Script commands of 3D models: the dimension, blocks, joint planes, walls and conditions.
+#include <algorithm>
+#include <cmath>
+
+#include "tessera/expr.hpp"
+#include "tessera/generators.hpp"
+#include "tessera/generators3.hpp"
+#include "tessera/random.hpp"
+#include "tessera/script.hpp"
+
+namespace tessera {
+
+const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
+  static const std::map<std::string, Handler> h = [] {
+    std::map<std::string, Handler> t = handlers();
+    for (const char* only2d : {"tunnel", "voronoi", "arch", "join", "zone", "boundary", "insitu",
+                               "figure", "save", "restore", "round"})
+      t[only2d] = &Interpreter::cmd_only2d;
+    t["block"] = &Interpreter::cmd_block3;
+    t["region"] = &Interpreter::cmd_region3;
+    t["crack"] = &Interpreter::cmd_crack3;
+    t["jset"] = &Interpreter::cmd_jset3;
+    t["wall"] = &Interpreter::cmd_wall3;
+    t["fix"] = &Interpreter::cmd_fix3;
+    t["free"] = &Interpreter::cmd_free3;
+    t["velocity"] = &Interpreter::cmd_velocity3;
+    t["gravity"] = &Interpreter::cmd_gravity3;
+    t["delete"] = &Interpreter::cmd_delete3;
+    return t;
+  }();
+  return h;
+}
+
+void Interpreter::cmd_only2d(Args& a) {
+  if (a.command == "round")
+    fail("3D blocks are not rounded: set the contact tolerance with 'tolerance T'");
+  fail("'" + a.command + "' is not available in 3D models yet (this model is 'dimension 3')");
+}
+
+void Interpreter::cmd_dimension(Args& a) {
+  if (a.words.size() != 1 || (a.words[0] != "2" && a.words[0] != "3"))
+    fail("write 'dimension 2' or 'dimension 3' at the top of the script");
+  done(a);
+  const uint8_t d = a.words[0] == "3" ? 3 : 2;
+  if (d != model_.dim && model_.block_count() > 0)
+    fail("the dimension is set before the first block (this model has " +
+         std::to_string(model_.block_count()) + " blocks in " + std::to_string(model_.dim) + "D)");
+  model_.dim = d;
+}
+
+Vec3 Interpreter::point3(const std::string& text) const {
+  const auto parts = split_top_level(text);
+  if (parts.size() != 3) fail("'" + text + "' is not a 3D point: write it as x,y,z");
+  return {num(parts[0]), num(parts[1]), num(parts[2])};
+}
+
+std::pair<int, int> Interpreter::group_material(Args& a) {
+  std::string v;
+  int group = -1, material = -1;
+  if (take(a, "group", v)) group = model_.group_index(v, true);
+  if (take(a, "material", v)) {
+    material = model_.material_index(v);
+    if (material < 0) fail("there is no material '" + v + "' (define it first)");
+  }
+  return {group, material};
+}
+
+void Interpreter::cmd_block3(Args& a) {
+  if (a.words.empty()) fail("write 'block box X0,Y0,Z0 X1,Y1,Z1' or 'block prism ...'");
+  const std::string shape = a.words[0];
+  Polyhedron p;
+  if (shape == "box") {
+    if (a.words.size() != 3) fail("write 'block box X0,Y0,Z0 X1,Y1,Z1' (two opposite corners)");
+    const Vec3 u = point3(a.words[1]), v = point3(a.words[2]);
+    if (!((u - v).cwiseAbs().minCoeff() > 0.0)) fail("the box has no volume");
+    p = box(u.cwiseMin(v), u.cwiseMax(v));
+  } else if (shape == "prism") {
+    std::vector<Eigen::Vector2d> base;
+    for (size_t i = 1; i < a.words.size(); ++i) base.push_back(point(a.words[i]));
+    std::string v;
+    if (!take(a, "z", v)) missing(a, "z", "'block prism X,Y X,Y X,Y ...' (z=Z0,Z1)");
+    const Vec2 z = point(v);
+    if (base.size() < 3) fail("a prism needs a base of three or more points X,Y");
+    if (const std::string why = polygon_problem(base); !why.empty())
+      fail("the prism's base: " + why);
+    if (signed_area(base) < 0.0) std::reverse(base.begin(), base.end());
+    if (!(z.y() != z.x())) fail("the prism has no height (z=Z0,Z1 with Z1 > Z0)");
+    p = prism(base, std::min(z.x(), z.y()), std::max(z.x(), z.y()));
+  } else {
+    fail("'" + shape + "' is not a block shape of 3D models (box or prism)" +
+         suggest(shape, {"box", "prism"}));
+  }
+  const auto [group, material] = group_material(a);
+  done(a);
+  try {
+    add_block3(model_, p, group, material);
+  } catch (const std::invalid_argument& e) {
+    fail("block " + std::to_string(model_.blocks3.size() + 1) + ": " + e.what());
+  }
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_region3(Args& a) {
+  if (a.words.size() != 2)
+    fail("write 'region X0,Y0,Z0 X1,Y1,Z1 [group=G] [material=M]' (two opposite corners)");
+  a.words.insert(a.words.begin(), "box");
+  cmd_block3(a);
+}
+
+void Interpreter::cut3(Args& a, std::vector<JointPlane> planes, const std::string& what) {
+  std::string name = what + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", name);
+  const auto sel = optional_selection(a);
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  done(a);
+  if (model_.blocks3.size() == 0) fail("there are no blocks to cut: make a region first");
+  const int tag = joint_tag(model_, name);
+  for (JointPlane& p : planes) p.tag = tag;
+  const size_t before = model_.blocks3.size();
+  const size_t added = cut_model3(model_, sel, planes);
+  log(a.command + " " + name + ": " + std::to_string(before) + " -> " +
+      std::to_string(model_.blocks3.size()) + " blocks (" + std::to_string(added) + " pieces)");
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_crack3(Args& a) {
+  JointPlane p;
+  double dip = 0, ddir = 0;
+  if (!take_num(a, "dip", dip)) missing(a, "dip", "a 3D crack (a plane: dip=, ddir=, origin=)");
+  if (!take_num(a, "ddir", ddir)) missing(a, "ddir", "a 3D crack (dip direction)");
+  std::string v;
+  if (!take(a, "origin", v)) missing(a, "origin", "a 3D crack (a point X,Y,Z on the plane)");
+  p.point = point3(v);
+  take_num(a, "radius", p.radius);
+  if (dip < 0.0 || dip > 90.0) fail("dip must be in [0, 90] degrees");
+  if (p.radius < 0.0) fail("radius must be positive (or absent for a plane without end)");
+  p.normal = normal_from_dip(dip, ddir);
+  cut3(a, {p}, "crack");
+}
+
+void Interpreter::cmd_jset3(Args& a) {
+  std::string v;
+  if (!take(a, "dip", v)) missing(a, "dip", "a 3D joint set (dip=, ddir=, spacing=)");
+  const auto [dip, dip_sd] = mean_sd(v);
+  if (!take(a, "ddir", v)) missing(a, "ddir", "a 3D joint set (dip direction)");
+  const auto [ddir, ddir_sd] = mean_sd(v);
+  if (!take(a, "spacing", v)) missing(a, "spacing", "a 3D joint set");
+  const auto [spacing, spacing_sd] = mean_sd(v);
+  Vec3 origin = Vec3::Zero();
+  if (take(a, "origin", v)) origin = point3(v);
+  double persistence = 1.0, seed = 1.0;
+  take_num(a, "persistence", persistence);
+  take_num(a, "seed", seed);
+  if (dip < 0.0 || dip > 90.0) fail("dip must be in [0, 90] degrees");
+  if (!(spacing > 0.0)) fail("the spacing must be positive");
+  if (!(persistence > 0.0 && persistence <= 1.0)) fail("persistence must be in (0, 1]");
+  // The extent to cover: the blocks' box, projected on the mean normal.
+  const Blocks3& B = model_.blocks3;
+  if (B.size() == 0) fail("there are no blocks to cut: make a region first");
+  const Vec3 n0 = normal_from_dip(dip, ddir);
+  double lo = 1e300, hi = -1e300;
+  for (const Vec3& x : B.world_vertex)
+    lo = std::min(lo, n0.dot(x - origin)), hi = std::max(hi, n0.dot(x - origin));
+  if ((hi - lo) / spacing > 1e5) fail("the spacing would make more than 100,000 planes");
+  Random draw(static_cast<uint64_t>(seed));
+  std::vector<JointPlane> planes;
+  const auto plane_at = [&](double s) {
+    JointPlane p;
+    p.normal = normal_from_dip(std::clamp(draw.normal(dip, dip_sd), 0.0, 90.0),
+                               draw.normal(ddir, ddir_sd));
+    p.point = origin + s * n0;
+    p.persistence = persistence;
+    p.seed = static_cast<uint64_t>(seed) * 1000003u + planes.size();
+    planes.push_back(p);
+  };
+  for (double s = 0.0; s <= hi; s += std::max(draw.normal(spacing, spacing_sd), 0.1 * spacing))
+    if (s >= lo) plane_at(s);
+  for (double s = -std::max(draw.normal(spacing, spacing_sd), 0.1 * spacing); s >= lo;
+       s -= std::max(draw.normal(spacing, spacing_sd), 0.1 * spacing))
+    if (s <= hi) plane_at(s);
+  cut3(a, planes, "jset");
+}
+
+void Interpreter::cmd_wall3(Args& a) {
+  if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
+  WallSpec3 w;
+  std::string v;
+  if (take(a, "origin", v)) w.origin = point3(v);
+  if (!take(a, "brick", v)) missing(a, "brick", "'wall' (brick=L,H,W: length, height, width)");
+  const Vec3 brick = point3(v);
+  w.length = brick.x(), w.height = brick.y(), w.width = brick.z();
+  if (!(brick.minCoeff() > 0.0)) fail("brick sizes must be positive");
+  if (!take(a, "courses", v)) missing(a, "courses", "'wall'");
+  w.courses = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
+  if (!take(a, "bricks", v)) missing(a, "bricks", "'wall' (bricks per course)");
+  w.bricks = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
+  if (static_cast<double>(w.courses) * w.bricks > 1e6)
+    fail("a wall of more than a million bricks is not supported");
+  std::tie(w.group, w.material) = group_material(a);
+  std::string name = "wall";
+  take(a, "name", name);
+  done(a);
+  w.bed_tag = joint_tag(model_, name + "_bed");
+  w.head_tag = joint_tag(model_, name + "_head");
+  add_wall3(model_, w);
+  overlap_checked_ = false;
+}
+
+namespace {
+// Fixity bits named by the words x, y, z, rotation (all when none is named).
+uint8_t fixity_words3(const std::vector<std::string>& words,
+                      const std::function<void(const std::string&)>& fail) {
+  uint8_t bits = 0;
+  for (const auto& w : words) {
+    if (w == "x")
+      bits |= kFix3X;
+    else if (w == "y")
+      bits |= kFix3Y;
+    else if (w == "z")
+      bits |= kFix3Z;
+    else if (w == "rotation")
+      bits |= kFix3Rot;
+    else
+      fail("'" + w + "' is not a degree of freedom (x, y, z or rotation)");
+  }
+  return bits ? bits : static_cast<uint8_t>(kFix3All);
+}
+}  // namespace
+
+void Interpreter::cmd_fix3(Args& a) {
+  const auto sel = select(a, true);
+  done(a);
+  const uint8_t bits = fixity_words3(a.words, [this](const std::string& s) { fail(s); });
+  Blocks3& B = model_.blocks3;
+  for (size_t b : sel) {
+    B.fixity[b] |= bits;
+    // Held at the velocity it has now unless 'velocity' says otherwise.
+    for (int k = 0; k < 3; ++k)
+      if (bits & (1 << k)) B.fixed_v[b][k] = B.body[b].velocity[k];
+    if (bits & kFix3Rot) B.fixed_w[b] = Vec3::Zero();
+  }
+  model_.touch();
+}
+
+void Interpreter::cmd_free3(Args& a) {
+  const auto sel = select(a, true);
+  done(a);
+  const uint8_t bits = fixity_words3(a.words, [this](const std::string& s) { fail(s); });
+  for (size_t b : sel) model_.blocks3.fixity[b] &= static_cast<uint8_t>(~bits);
+  model_.touch();
+}
+
+void Interpreter::cmd_velocity3(Args& a) {
+  const auto sel = select(a);
+  double v[3] = {0, 0, 0};
+  bool has[3];
+  has[0] = take_num(a, "vx", v[0]), has[1] = take_num(a, "vy", v[1]),
+  has[2] = take_num(a, "vz", v[2]);
+  done(a);
+  if (!has[0] && !has[1] && !has[2]) fail("'velocity' needs vx=, vy= or vz=");
+  Blocks3& B = model_.blocks3;
+  for (size_t b : sel)
+    for (int k = 0; k < 3; ++k)
+      if (has[k]) B.body[b].velocity[k] = v[k], B.fixed_v[b][k] = v[k];
+}
+
+void Interpreter::cmd_gravity3(Args& a) {
+  if (a.words.size() != 3) fail("write 'gravity GX GY GZ' (m/s^2), e.g. 'gravity 0 0 -9.81'");
+  model_.settings.gravity3 = Vec3(num(a.words[0]), num(a.words[1]), num(a.words[2]));
+}
+
+void Interpreter::cmd_delete3(Args& a) {
+  const auto sel = select(a);
+  done(a);
+  delete_blocks3(model_, sel);
+  log("delete: " + std::to_string(sel.size()) + " block(s) removed");
+}
+
+}  // namespace tessera

@@ -1,0 +1,131 @@
+#include "tessera/generators3.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tessera {
+
+size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
+                  const std::vector<int>& face_tags) {
+  const double density = material >= 0 ? m.materials[static_cast<size_t>(material)].density : 0.0;
+  const size_t b = m.blocks3.add(p, density, group, material, face_tags);
+  m.touch();
+  return b;
+}
+
+size_t cut_model3(Model& m, const std::vector<size_t>& selection,
+                  const std::vector<JointPlane>& planes) {
+  Blocks3& B = m.blocks3;
+  std::vector<uint8_t> chosen(B.size(), selection.empty() ? 1 : 0);
+  for (size_t b : selection) chosen[b] = 1;
+  std::vector<CutBlock> input;
+  std::vector<size_t> owner;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!chosen[b]) continue;
+    CutBlock c;
+    c.poly = B.polyhedron(b);
+    c.face_tags.assign(B.face_tag.begin() + B.face_begin[b],
+                       B.face_tag.begin() + B.face_begin[b + 1]);
+    input.push_back(std::move(c));
+    owner.push_back(b);
+  }
+  const std::vector<CutBlock> pieces = cut_blocks(input, planes);
+  if (pieces.size() == input.size()) return 0;
+  // Keep the blocks no plane split; then the pieces of those that were.
+  std::vector<size_t> piece_count(input.size(), 0);
+  for (const CutBlock& p : pieces) ++piece_count[p.parent];
+  std::vector<uint8_t> doomed(B.size(), 0);
+  for (size_t i = 0; i < input.size(); ++i)
+    if (piece_count[i] > 1) doomed[owner[i]] = 1;
+  const Blocks3 old = B;
+  std::vector<int> map = B.remove(doomed);
+  for (size_t b = 0; b < B.size(); ++b) B.id[b] = static_cast<int>(b) + 1;
+  size_t added = 0;
+  for (const CutBlock& p : pieces) {
+    const size_t parent = owner[p.parent];
+    if (piece_count[p.parent] < 2) continue;
+    const size_t b = add_block3(m, p.poly, old.group[parent], old.material[parent], p.face_tags);
+    B.fixity[b] = old.fixity[parent];
+    B.fixed_v[b] = old.fixed_v[parent], B.fixed_w[b] = old.fixed_w[parent];
+    B.body[b].velocity = old.body[parent].velocity;
+    ++added;
+  }
+  // Histories of cut blocks end; contacts are found afresh.
+  for (auto& s : m.histories.series)
+    if (s.block >= 0)
+      s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+  m.contacts3.clear();
+  m.det_pos3.clear(), m.det_q3.clear();
+  m.block_contact_begin.clear();
+  m.touch();
+  return added;
+}
+
+void add_wall3(Model& m, const WallSpec3& w) {
+  for (int k = 0; k < w.courses; ++k) {
+    const double z0 = w.origin.z() + k * w.height;
+    // Brick ends along the course: every second course starts and ends with a half brick.
+    std::vector<double> ends{0.0};
+    const bool offset = k % 2 == 1;
+    if (offset) ends.push_back(0.5 * w.length);
+    for (int i = 0; i < (offset ? w.bricks - 1 : w.bricks); ++i)
+      ends.push_back(ends.back() + w.length);
+    if (offset) ends.push_back(ends.back() + 0.5 * w.length);
+    for (size_t i = 0; i + 1 < ends.size(); ++i) {
+      const Vec3 lo(w.origin.x() + ends[i], w.origin.y(), z0);
+      const Vec3 hi(w.origin.x() + ends[i + 1], w.origin.y() + w.width, z0 + w.height);
+      const Polyhedron p = box(lo, hi);
+      // Bed joints on the faces across z, head joints across x.
+      std::vector<int> tags;
+      const SolidProperties s = solid_properties(p);
+      for (const auto& face : p.faces) {
+        Vec3 c = Vec3::Zero();
+        for (uint32_t v : face) c += p.vertices[v];
+        c /= static_cast<double>(face.size());
+        const Vec3 d = (c - s.centroid).cwiseAbs();
+        tags.push_back(d.z() > 0.49 * w.height            ? w.bed_tag
+                       : d.x() > 0.49 * (hi.x() - lo.x()) ? w.head_tag
+                                                          : -1);
+      }
+      add_block3(m, p, w.group, w.material, tags);
+    }
+  }
+}
+
+void delete_blocks3(Model& m, const std::vector<size_t>& blocks) {
+  Blocks3& B = m.blocks3;
+  std::vector<uint8_t> doomed(B.size(), 0);
+  for (size_t b : blocks) doomed[b] = 1;
+  const std::vector<uint32_t> old_face = B.face_begin;
+  const std::vector<int> map = B.remove(doomed);
+  // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
+  std::vector<Contact3> kept;
+  for (Contact3& c : m.contacts3) {
+    if (map[c.a] < 0 || map[c.b] < 0) continue;
+    const auto na = static_cast<uint32_t>(map[c.a]), nb = static_cast<uint32_t>(map[c.b]);
+    const auto shift_face = [&](uint32_t f, uint32_t from, uint32_t to) {
+      return f - old_face[from] + B.face_begin[to];
+    };
+    c.face_a = shift_face(c.face_a, c.a, na), c.face_b = shift_face(c.face_b, c.b, nb);
+    if (c.kind == kPlaneFaceA) c.ia = shift_face(c.ia, c.a, na);
+    if (c.kind == kPlaneFaceB) c.ib = shift_face(c.ib, c.b, nb);
+    // Edge directions and vertex keys are renumbered too: the next pass finds the plane anew.
+    if (c.kind == kPlaneEdges) m.detection_due = true;
+    for (SubContact& s : c.subs) s.key = 0;
+    c.a = na, c.b = nb;
+    kept.push_back(std::move(c));
+  }
+  m.contacts3 = std::move(kept);
+  std::vector<Vec3> pos;
+  std::vector<Eigen::Quaterniond> q;
+  for (size_t b = 0; b < map.size() && m.det_pos3.size() == map.size(); ++b)
+    if (map[b] >= 0) pos.push_back(m.det_pos3[b]), q.push_back(m.det_q3[b]);
+  m.det_pos3 = std::move(pos), m.det_q3 = std::move(q);
+  for (auto& s : m.histories.series)
+    if (s.block >= 0)
+      s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+  m.touch();
+  m.block_contact_begin.clear();
+}
+
+}  // namespace tessera

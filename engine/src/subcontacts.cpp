@@ -1,0 +1,238 @@
+// Sub-contacts of a 3D contact: the overlap of the two facing faces on the common plane, and
+// the joint law at each of its corners (see contacts3.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "tessera/contacts.hpp"
+#include "tessera/solver3.hpp"
+
+namespace tessera {
+
+namespace {
+
+// Keys: what made a corner of the overlap polygon.
+constexpr uint64_t kKeyVertexA = 1ull << 62, kKeyVertexB = 2ull << 62, kKeyCross = 3ull << 62;
+// Edge identities while clipping: A's edges are face_vert positions, B's are offset by this.
+constexpr uint64_t kEdgeB = 1ull << 31;
+
+struct PolyVertex {
+  Eigen::Vector2d p;
+  uint64_t key;
+  uint64_t next_edge;  // the edge from this vertex to the next
+};
+
+inline double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+  return u.x() * v.y() - u.y() * v.x();
+}
+
+// The face of block b that faces the plane: of the faces through its vertex nearest the plane
+// (support value `support` along `dir`, outwards), the one whose outward normal is most nearly
+// along `dir`. The current one is kept unless another is better by a margin, so the choice does
+// not flicker between two.
+uint32_t facing_face(const Blocks3& B, uint32_t b, const Vec3& dir, double support,
+                     uint32_t current) {
+  const double eps = 1e-9 * B.bound_radius[b];
+  const auto touches = [&](uint32_t f) {
+    for (uint32_t k = B.fv_begin[f]; k < B.fv_begin[f + 1]; ++k)
+      if (dir.dot(B.world_vertex[B.face_vert[k]]) >= support - eps) return true;
+    return false;
+  };
+  uint32_t best = current;
+  const bool valid =
+      current >= B.face_begin[b] && current < B.face_begin[b + 1] && touches(current);
+  double best_dot = valid ? B.world_normal[current].dot(dir) + 1e-3 : -2.0;
+  for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
+    const double d = B.world_normal[f].dot(dir);
+    if (d > best_dot && touches(f)) best_dot = d, best = f;
+  }
+  return best;
+}
+
+// Clips polygon `poly` (counter-clockwise) by the counter-clockwise convex polygon `clip`
+// (Sutherland-Hodgman), keeping track of the features that make every corner.
+void clip_polygon(std::vector<PolyVertex>& poly, const std::vector<PolyVertex>& clip,
+                  const std::vector<uint32_t>& clip_vertex, double eps,
+                  std::vector<PolyVertex>& scratch) {
+  const size_t nc = clip.size();
+  for (size_t j = 0; j < nc && !poly.empty(); ++j) {
+    const Eigen::Vector2d q0 = clip[j].p, q1 = clip[(j + 1) % nc].p, e = q1 - q0;
+    const uint64_t edge_j = clip[j].next_edge;
+    scratch.clear();
+    const size_t n = poly.size();
+    for (size_t i = 0; i < n; ++i) {
+      const PolyVertex& s = poly[i];
+      const PolyVertex& t = poly[(i + 1) % n];
+      const double ds = cross2(e, s.p - q0), dt = cross2(e, t.p - q0);
+      const bool s_in = ds >= -eps, t_in = dt >= -eps;
+      // Where edge s-t meets clip line j: an A edge crossing a B edge, or a corner of B.
+      const auto meet = [&](uint64_t next) {
+        const double r = ds / (ds - dt);
+        uint64_t key;
+        if (s.next_edge & kEdgeB) {
+          const uint32_t i_edge = static_cast<uint32_t>(s.next_edge & (kEdgeB - 1));
+          const uint32_t j_edge = static_cast<uint32_t>(edge_j & (kEdgeB - 1));
+          key = kKeyVertexB | clip_vertex[(i_edge + 1) % nc == j_edge ? j_edge : i_edge];
+        } else {
+          key = kKeyCross | (s.next_edge << 31) | (edge_j & (kEdgeB - 1));
+        }
+        return PolyVertex{s.p + r * (t.p - s.p), key, next};
+      };
+      if (s_in && t_in) {
+        scratch.push_back(t);
+      } else if (s_in && !t_in) {
+        if (ds > eps) scratch.push_back(meet(edge_j));
+      } else if (!s_in && t_in) {
+        if (dt > eps) scratch.push_back(meet(s.next_edge));
+        scratch.push_back(t);
+      }
+    }
+    poly.swap(scratch);
+  }
+}
+
+// Scratch space of one thread.
+struct Work {
+  std::vector<PolyVertex> poly, clip, scratch;
+  std::vector<uint32_t> clip_vertex;
+  std::vector<SubContact> old;
+};
+thread_local Work work;
+
+}  // namespace
+
+void update_contact3(const Model& m, Contact3& c) {
+  const Blocks3& B = m.blocks3;
+  const uint32_t a = c.a, b = c.b;
+  // The plane moves with the blocks: the same candidate, re-evaluated.
+  PlaneFit fit = evaluate_plane(B, a, b, c.kind, c.ia, c.ib);
+  if (fit.gap <= -1e299) {
+    fit = best_plane(B, a, b);
+    c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
+  }
+  const Vec3 n = fit.normal;
+  const double lo_a = min_dot(B, a, n), hi_b = max_dot(B, b, n);
+  c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
+  c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
+  c.face_b = facing_face(B, b, n, hi_b, c.face_b);
+  // Tangent basis of the plane (t1 x t2 = n).
+  const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  const Vec3 t2 = n.cross(t1);
+  const auto project = [&](const Vec3& x) { return Eigen::Vector2d(x.dot(t1), x.dot(t2)); };
+  // a's face is counter-clockwise seen from below the plane: walk it backwards.
+  Work& w = work;
+  w.poly.clear(), w.clip.clear(), w.clip_vertex.clear();
+  const uint32_t fa0 = B.fv_begin[c.face_a], fa1 = B.fv_begin[c.face_a + 1];
+  for (uint32_t k = fa1; k-- > fa0;) {
+    const uint32_t prev = k > fa0 ? k - 1 : fa1 - 1;
+    w.poly.push_back({project(B.world_vertex[B.face_vert[k]]), kKeyVertexA | B.face_vert[k], prev});
+  }
+  const uint32_t fb0 = B.fv_begin[c.face_b], fb1 = B.fv_begin[c.face_b + 1];
+  for (uint32_t k = fb0; k < fb1; ++k) {
+    w.clip.push_back({project(B.world_vertex[B.face_vert[k]]), kKeyVertexB | B.face_vert[k],
+                      kEdgeB | (k - fb0)});
+    w.clip_vertex.push_back(B.face_vert[k]);
+  }
+  const double scale = B.bound_radius[a] + B.bound_radius[b];
+  clip_polygon(w.poly, w.clip, w.clip_vertex, 1e-12 * scale * scale, w.scratch);
+  // Corners closer than a billionth of the blocks' size are one.
+  {
+    std::vector<PolyVertex>& p = w.poly;
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+      if (k == 0 || (p[i].p - p[k - 1].p).norm() > 1e-9 * scale) p[k++] = p[i];
+    while (k > 1 && (p[k - 1].p - p[0].p).norm() <= 1e-9 * scale) --k;
+    p.resize(k);
+  }
+  // Areas: half of each fan triangle beside a corner.
+  const size_t np = w.poly.size();
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const PolyVertex& v : w.poly) centre += v.p;
+  if (np) centre /= static_cast<double>(np);
+  w.old.swap(c.subs);
+  c.subs.clear();
+  const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
+  const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
+  const double mna = ma.dot(n), mnb = mb.dot(n);
+  const RigidBody3& ba = B.body[a];
+  const RigidBody3& bb = B.body[b];
+  const Mat3 ra_t = ba.orientation.conjugate().toRotationMatrix();
+  const double tol = m.tolerance();
+  std::vector<uint8_t> used(w.old.size(), 0);
+  for (size_t i = 0; i < np && std::abs(mna) > 0.05 && std::abs(mnb) > 0.05; ++i) {
+    const Eigen::Vector2d& p = w.poly[i].p;
+    const Eigen::Vector2d& pp = w.poly[(i + np - 1) % np].p;
+    const Eigen::Vector2d& pn = w.poly[(i + 1) % np].p;
+    SubContact s;
+    s.key = w.poly[i].key;
+    s.area = 0.25 * (std::abs(cross2(pp - centre, p - centre)) +
+                     std::abs(cross2(p - centre, pn - centre)));
+    s.point = c.offset * n + p.x() * t1 + p.y() * t2;
+    // Heights of the two faces above the plane along n.
+    const double ha = (da - ma.dot(s.point)) / mna, hb = (db - mb.dot(s.point)) / mnb;
+    s.gap = ha - hb;
+    s.local_a = ra_t * (s.point - ba.position);
+    // The joint state of last cycle's sub-contact with this key, or the nearest within the
+    // tolerance in a's frame.
+    int match = -1;
+    for (size_t o = 0; o < w.old.size() && match < 0; ++o)
+      if (!used[o] && w.old[o].key == s.key) match = static_cast<int>(o);
+    double best = tol;
+    for (size_t o = 0; o < w.old.size() && match < 0; ++o) {
+      const double d = (w.old[o].local_a - s.local_a).norm();
+      if (!used[o] && d < best) best = d, match = static_cast<int>(o);
+    }
+    if (match < 0) {
+      // A new sub-contact of a contact bonded when the model was made is bonded too.
+      if (m.cycle == 0) {
+        const JointProperties& jp = m.joints[c.joint];
+        if (jp.cohesion > 0.0 || jp.tension > 0.0) s.flags |= kBonded;
+      }
+    } else {
+      const SubContact& o = w.old[static_cast<size_t>(match)];
+      used[static_cast<size_t>(match)] = 1;
+      s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
+      s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags;
+    }
+    c.subs.push_back(s);
+  }
+  // Contact type from the vertices of each block within the tolerance of the plane.
+  int near_a = 0, near_b = 0;
+  for (uint32_t v = B.vert_begin[a]; v < B.vert_begin[a + 1]; ++v)
+    near_a += n.dot(B.world_vertex[v]) <= lo_a + tol;
+  for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+    near_b += n.dot(B.world_vertex[v]) >= hi_b - tol;
+  const int lo = std::min(near_a, near_b), hi = std::max(near_a, near_b);
+  c.type = lo <= 1 ? kVertexFace : hi == 2 ? kEdgeEdge : lo == 2 ? kEdgeFace : kFaceFace;
+  // The joint law at every sub-contact.
+  const double dt = m.dt;
+  const JointProperties& jp = m.joints[c.joint];
+  const Vec3 wa = ba.angular_velocity(), wb = bb.angular_velocity();
+  c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
+  c.force_mag = 0.0;
+  for (SubContact& s : c.subs) {
+    const double overlap = -s.gap;
+    const double un = overlap + s.dilation;
+    if (un <= 0.0 && s.fn == 0.0 && !(s.flags & (kBonded | kTouching))) {
+      s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();
+      continue;
+    }
+    // Last cycle's shear force turned into the plane, its magnitude kept.
+    const double fs_mag = s.fs.norm();
+    Vec3 fs = s.fs - s.fs.dot(n) * n;
+    if (fs_mag > 0.0 && fs.norm() > 0.0) fs *= fs_mag / fs.norm();
+    const Vec3 ra = s.point - ba.position, rb = s.point - bb.position;
+    const Vec3 dv = (ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb));
+    JointState st{s.fn, fs.dot(t1), s.un_prev, s.dilation, s.sd1, s.flags, fs.dot(t2), s.sd2};
+    jp.impl->update(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
+    s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
+    s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags;
+    s.fs = st.fs * t1 + st.fs2 * t2;
+    s.force = st.fn * n + s.fs;
+    c.force += s.force;
+    c.torque_a += ra.cross(s.force);
+    c.torque_b -= rb.cross(s.force);
+    c.force_mag += std::abs(st.fn) + std::hypot(st.fs, st.fs2);
+  }
+}
+
+}  // namespace tessera
