@@ -52,6 +52,11 @@ uint64_t state_hash(const Model& m) {
   mix_vec(h, C.fn), mix_vec(h, C.fs), mix_vec(h, C.a), mix_vec(h, C.corner);
   const Continuum& Z = m.continuum;
   mix_vec(h, Z.pos), mix_vec(h, Z.vel), mix_vec(h, Z.stress), mix_vec(h, Z.state);
+  for (const RigidBody3& b : m.blocks3.body)
+    mix(h, b.position.data(), 24), mix(h, b.velocity.data(), 24), mix(h, b.momentum.data(), 24),
+        mix(h, b.orientation.coeffs().data(), 32);
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& s : c.subs) mix(h, &s.fn, sizeof s.fn), mix(h, s.fs.data(), 24);
   mix(h, &m.time, sizeof m.time);
   return h;
 }

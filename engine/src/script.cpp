@@ -302,7 +302,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (!hit) fail("no block contains the point " + v);
     any = true;
   }
-  if (take(a, "at", v)) {
+  if (!three && take(a, "at", v)) {
     const Vec2 p = point(v);
     bool hit = false;
     for (size_t b = 0; b < B.size() && !hit; ++b)

@@ -1,0 +1,290 @@
+// 3D rigid blocks against closed forms: a block sliding down an incline cut at an oblique dip
+// direction, a block on a bonded joint oscillating at sqrt(k/m), a free block spinning about a
+// non-principal axis, the limiting friction angle of a Hoek & Bray wedge, and 2D models
+// extruded one block thick giving the 2D answers.
+#include <QtTest>
+#include <cmath>
+#include <functional>
+
+#include "support.hpp"
+#include "tessera/cutting3.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+constexpr double kDeg = M_PI / 180;
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+std::string pt(const Vec3& p) {
+  return num(p.x()) + "," + num(p.y()) + "," + num(p.z());
+}
+
+// Downslope unit vector of a plane of dip and dip direction (degrees).
+Vec3 dip_vector(double dip, double ddir) {
+  return {std::cos(dip * kDeg) * std::sin(ddir * kDeg),
+          std::cos(dip * kDeg) * std::cos(ddir * kDeg), -std::sin(dip * kDeg)};
+}
+
+// A 1 m cube cut out of a region resting on a slab, both bounded by a plane of dip psi towards
+// ddir: every face of the block is oblique to the axes.
+std::string oblique_incline(double psi, double ddir, double phi) {
+  const Vec3 n = normal_from_dip(psi, ddir), d = dip_vector(psi, ddir), t = n.cross(d);
+  std::string s =
+      "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+      "joint define j kn=1e10 ks=1e10 friction=" +
+      num(phi) +
+      "\njoint assign j\n"
+      "region -6,-6,-6 6,6,4 material=rock\n"
+      "crack dip=" +
+      num(psi) + " ddir=" + num(ddir) +
+      " origin=0,0,0 name=slope\n"
+      "group slab at=" +
+      pt(-0.5 * n) + "\ngroup rest at=" + pt(0.5 * n) + "\nfix group=slab\n";
+  // The block: four planes across the slope and one parallel to it, cutting the upper piece.
+  const auto cut = [&](const Vec3& normal, const Vec3& through) {
+    const double dip = std::acos(std::abs(normal.z())) / kDeg;
+    const Vec3 up = normal.z() < 0 ? Vec3(-normal) : normal;
+    double dd = std::atan2(up.x(), up.y()) / kDeg;
+    if (std::hypot(up.x(), up.y()) < 1e-12) dd = 0;
+    s += "crack dip=" + num(dip) + " ddir=" + num(dd) + " origin=" + pt(through) + " group=rest\n";
+  };
+  cut(n, n);
+  cut(d, 0.5 * d), cut(d, -0.5 * d), cut(t, 0.5 * t), cut(t, -0.5 * t);
+  s += "group block at=" + pt(0.5 * n) +
+       "\ndelete group=rest\ngravity 0 0 -9.81\ndamping none\nhistory interval 1\n";
+  return s;
+}
+
+// Fitted acceleration of block b along direction d over [t0, t1] of simulated time.
+double acceleration_along(ScriptRun& r, size_t b, const Vec3& d, double t0, double t1) {
+  Model& m = r.model();
+  std::vector<double> t, v;
+  while (m.time < t1) {
+    r.run("step 20");
+    if (m.time > t0) t.push_back(m.time), v.push_back(m.blocks3.body[b].velocity.dot(d));
+  }
+  return tessera::test::fitted_slope(t, v);
+}
+
+// The friction angle at which a wedge on planes A and B is at the limit (Hoek and Bray): the
+// weight balanced by normal reactions on both planes and a force T along their intersection;
+// sliding starts when T exceeds (N_A + N_B) tan phi.
+double wedge_limit_angle(const Vec3& na, const Vec3& nb) {
+  Vec3 s = na.cross(nb).normalized();
+  if (s.z() > 0) s = -s;
+  Mat3 a;
+  a.col(0) = na, a.col(1) = nb, a.col(2) = -s;
+  const Vec3 x = a.colPivHouseholderQr().solve(Vec3(0, 0, 1));  // unit weight
+  return std::atan(x(2) / (x(0) + x(1))) / kDeg;
+}
+}  // namespace
+
+class TestBlocks3d : public QObject {
+  Q_OBJECT
+ private slots:
+  void obliqueInclineSlidesWithTheCoulombAcceleration() {
+    const double psi = 30, ddir = 135, phi = 20;
+    ScriptRun r;
+    r.run(oblique_incline(psi, ddir, phi));
+    Model& m = r.model();
+    QCOMPARE(m.blocks3.size(), size_t(2));
+    const size_t b = m.blocks3.group[0] == m.group_index("block", false) ? 0 : 1;
+    QVERIFY(std::abs(m.blocks3.volume[b] - 1.0) < 1e-9);
+    const double a = acceleration_along(r, b, dip_vector(psi, ddir), 0.2, 1.0);
+    const double expected =
+        9.81 * (std::sin(psi * kDeg) - std::cos(psi * kDeg) * std::tan(phi * kDeg));
+    qInfo("acceleration %.5f, closed form %.5f", a, expected);
+    QVERIFY(std::abs(a - expected) < 0.01 * expected);
+    // Sliding straight down the dip, without turning.
+    const Vec3 v = m.blocks3.body[b].velocity;
+    QVERIFY(std::abs(v.dot(normal_from_dip(psi, ddir).cross(dip_vector(psi, ddir)))) <
+            1e-3 * v.norm());
+    QVERIFY(m.blocks3.body[b].angular_velocity().norm() < 1e-2);
+  }
+
+  void obliqueInclineHoldsWhenFrictionExceedsTheSlope() {
+    ScriptRun r;
+    r.run(oblique_incline(30, 135, 40) + "damping local\nsolve ratio=1e-6\ndamping none");
+    Model& m = r.model();
+    const size_t b = m.blocks3.group[0] == m.group_index("block", false) ? 0 : 1;
+    const Vec3 start = m.blocks3.body[b].position;
+    const double t0 = m.time;
+    while (m.time < t0 + 0.5) r.run("step 100");
+    const double moved = (m.blocks3.body[b].position - start).norm();
+    qInfo("moved %.3g m in 0.5 s undamped", moved);
+    QVERIFY(moved < 1e-5);
+  }
+
+  void blockOnBondedJointOscillatesAtSqrtKOverM() {
+    // 1 m cube (2500 kg) on a 1 m^2 bonded joint, kn = 1e9 Pa/m: omega = sqrt(kn A / m).
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.001\nmaterial define rock density=2500\n"
+        "joint define glue kn=1e9 ks=1e9 friction=30 cohesion=1e7 tension=1e7\njoint assign glue\n"
+        "block box -1,-1,-1 2,2,0 group=base material=rock\nfix group=base\n"
+        "block box 0,0,0 1,1,1 material=rock\n"
+        "damping none\ntimestep auto safety=0.05\nvelocity block=2 vz=-0.001\n");
+    Model& m = r.model();
+    // Upward zero crossings of the vertical displacement give the period.
+    std::vector<double> crossings;
+    double prev = 0.0;
+    while (crossings.size() < 11) {
+      r.run("step 1");
+      const double z = m.blocks3.body[1].position.z() - m.blocks3.ref[1].z();
+      if (prev < 0.0 && z >= 0.0) crossings.push_back(m.time - m.dt * z / (z - prev));
+      prev = z;
+    }
+    const double period = (crossings.back() - crossings.front()) / 10.0;
+    const double expected = 2 * M_PI / std::sqrt(1e9 * 1.0 / 2500.0);
+    qInfo("period %.6g s, closed form %.6g s", period, expected);
+    QVERIFY(std::abs(period - expected) < 0.01 * expected);
+  }
+
+  void freeBlockKeepsEnergyAndMomentum() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.001\nmaterial define rock density=2500\n"
+        "joint define j kn=1e9 ks=1e9 friction=30\njoint assign j\n"
+        "block box 0,0,0 1,2,3 material=rock\ndamping none\n");
+    Model& m = r.model();
+    RigidBody3& b = m.blocks3.body[0];
+    b.momentum = Vec3(300, -200, 500);  // about no principal axis
+    r.run("step 1");
+    const double e0 = b.kinetic_energy();
+    const Vec3 l0 = b.momentum;
+    r.run("step 100000");
+    const double de = std::abs(b.kinetic_energy() - e0) / e0;
+    const double dl = (b.momentum - l0).norm() / l0.norm();
+    qInfo("after 1e5 cycles: energy %.3g, momentum %.3g (relative change)", de, dl);
+    QVERIFY(de < 1e-6);
+    QVERIFY(dl < 1e-6);
+    // The shape stays rigid: the cached world vertices keep their distances.
+    const Blocks3& B = m.blocks3;
+    double diagonal = 0.0;
+    for (const Vec3& p : B.world_vertex)
+      for (const Vec3& q : B.world_vertex) diagonal = std::max(diagonal, (p - q).norm());
+    QVERIFY(std::abs(diagonal - std::sqrt(14.0)) < 1e-9);
+  }
+
+  void wedgeStartsToSlideAtTheHoekBrayFrictionAngle() {
+    // Planes A and B through a point 6 m below the crest of a vertical face (normal -y).
+    const double dip_a = 50, dd_a = 140, dip_b = 55, dd_b = 230;
+    const double limit =
+        wedge_limit_angle(normal_from_dip(dip_a, dd_a), normal_from_dip(dip_b, dd_b));
+    qInfo("Hoek-Bray limit friction angle %.3f degrees", limit);
+    const auto slides = [&](double phi) {
+      ScriptRun r;
+      r.run(
+          "dimension 3\ntolerance 0.01\nmaterial define rock density=2600\n"
+          "joint define j kn=1e10 ks=1e10 friction=" +
+          num(phi) +
+          "\njoint assign j\nregion -12,0,-14 12,14,0 material=rock\n"
+          "crack dip=" +
+          num(dip_a) + " ddir=" + num(dd_a) +
+          " origin=0,0,-6 name=A\n"
+          "crack dip=" +
+          num(dip_b) + " ddir=" + num(dd_b) +
+          " origin=0,0,-6 name=B\n"
+          "group wedge at=0,0.5,-0.5\nfix all\nfree group=wedge\n"
+          "gravity 0 0 -9.81\ndamping none\n");
+      Model& m = r.model();
+      const size_t w = static_cast<size_t>(
+          std::find(m.blocks3.group.begin(), m.blocks3.group.end(), m.group_index("wedge", false)) -
+          m.blocks3.group.begin());
+      const Vec3 start = m.blocks3.body[w].position;
+      while (m.time < 1.0) r.run("step 200");
+      const double moved = (m.blocks3.body[w].position - start).norm();
+      qInfo("phi %.3f: wedge moved %.3g m in 1 s", phi, moved);
+      return moved > 1e-3;
+    };
+    double lo = limit - 4.0, hi = limit + 4.0;
+    QVERIFY(slides(lo));
+    QVERIFY(!slides(hi));
+    while (hi - lo > 0.25) {
+      const double mid = 0.5 * (lo + hi);
+      (slides(mid) ? lo : hi) = mid;
+    }
+    qInfo("model limit angle in [%.3f, %.3f]", lo, hi);
+    QVERIFY(std::abs(0.5 * (lo + hi) - limit) < 0.5);
+  }
+
+  void extrudedInclineGivesThe2dAnswer() {
+    // The 2D block-on-incline model and the same section extruded 1 m along z.
+    const std::string section =
+        "set psi = 30\nset phi = 20\nset c = cos(psi)\nset s = sin(psi)\n"
+        "material define rock density=2500\njoint define j kn=1e10 ks=1e10 friction=phi\n"
+        "joint assign j\ndamping none\n";
+    const std::string slab = "(-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s)";
+    const std::string block = "0,0 c,s (c-s),(s+c) (-s),c";
+    ScriptRun r2, r3;
+    r2.run(section + "round 0.005\nblock " + slab + " group=slab material=rock\nblock " + block +
+           " material=rock\nfix group=slab\ngravity 0 -9.81\nstep 5000");
+    r3.run("dimension 3\ntolerance 0.005\n" + section + "block prism " + slab +
+           " z=-1,2 group=slab material=rock\nblock prism " + block +
+           " z=0,1 material=rock\nfix group=slab\ngravity 0 -9.81 0\nstep 5000");
+    const Model &m2 = r2.model(), &m3 = r3.model();
+    const double v2 = std::hypot(m2.blocks.vx[1], m2.blocks.vy[1]) / m2.time;
+    const double v3 = m3.blocks3.body[1].velocity.norm() / m3.time;
+    qInfo("mean acceleration 2D %.5f, 3D %.5f", v2, v3);
+    QVERIFY(std::abs(v3 - v2) < 0.02 * v2);
+    QVERIFY(std::abs(m3.blocks3.body[1].velocity.z()) < 1e-9);
+  }
+
+  void extrudedToppleAndStandMatch2d() {
+    // A slender block on a 30 degree slope with friction enough not to slide topples (b/h =
+    // 0.33 < tan 30); a squat one (b/h = 0.8) stands, in 2D and extruded. A toppling block's
+    // tilt grows from round-off, so the models are compared by the time to tilt 0.2 rad.
+    for (const double b : {0.4, 0.96}) {
+      const double h = 1.2;
+      const std::string pre =
+          "set psi = 30\nset b = " + num(b) + "\nset h = " + num(h) +
+          "\nset c = cos(psi)\nset s = sin(psi)\n"
+          "material define rock density=2500\n"
+          "joint define j kn=1e10 ks=1e10 friction=45\njoint assign j\ndamping none\n";
+      const std::string slab = "(-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s)";
+      const std::string block = "0,0 b*c,b*s (b*c-h*s),(b*s+h*c) (-h*s),h*c";
+      ScriptRun r2, r3;
+      r2.run(pre + "round 0.005\nblock " + slab + " group=slab material=rock\nblock " + block +
+             " material=rock\nfix group=slab\ngravity 0 -9.81");
+      r3.run("dimension 3\ntolerance 0.005\n" + pre + "block prism " + slab +
+             " z=-1,2 group=slab material=rock\nblock prism " + block +
+             " z=0,1 material=rock\nfix group=slab\ngravity 0 -9.81 0");
+      const auto tilt2 = [&] { return std::abs(r2.model().blocks.theta[1]); };
+      const auto tilt3 = [&] {
+        return history_value(r3.model(), {HistoryQuantity::kRotation, 1, -1, ""});
+      };
+      const auto time_to_tilt = [](ScriptRun& r, const std::function<double()>& tilt) {
+        while (tilt() < 0.2 && r.model().time < 2.0) r.run("step 50");
+        return r.model().time;
+      };
+      const double t2 = time_to_tilt(r2, tilt2), t3 = time_to_tilt(r3, tilt3);
+      qInfo("b/h %.2f: tilt 2D %.4f rad at %.3f s, 3D %.4f rad at %.3f s", b / h, tilt2(), t2,
+            tilt3(), t3);
+      if (b / h < std::tan(30 * kDeg)) {
+        // Rigid rotation about the toe: I_toe theta'' = m g r sin(alpha0 + theta), alpha0 the
+        // initial angle of the centroid past the vertical through the toe.
+        const double r = 0.5 * std::hypot(b, h),
+                     lever = 0.5 * b * std::cos(30 * kDeg) - 0.5 * h * std::sin(30 * kDeg);
+        const double rate = 9.81 * r / ((b * b + h * h) / 12.0 + r * r);
+        double th = 0.0, w = 0.0, t = 0.0;
+        for (const double dt = 1e-5; th < 0.2; t += dt)
+          w += rate * std::sin(std::asin(-lever / r) + th) * dt, th += w * dt;
+        qInfo("closed form: 0.2 rad at %.3f s", t);
+        QVERIFY(t2 < 2.0 && t3 < 2.0);
+        QVERIFY(std::abs(t3 - t2) < 0.05 * t2);
+        QVERIFY(std::abs(t3 - t) < 0.05 * t);
+      } else {
+        QVERIFY(tilt2() < 1e-3);
+        QVERIFY(tilt3() < 1e-3);
+      }
+    }
+  }
+};
+
+QTEST_APPLESS_MAIN(TestBlocks3d)
+#include "test_blocks3d.moc"
