@@ -116,6 +116,8 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   surface.push_back(area);
   bound_radius.push_back(size);
   update_world(b);
+  // The vertices as given, so that neighbours cut from one block share them bit for bit.
+  for (size_t k = 0; k < p.vertices.size(); ++k) world_vertex[v0 + k] = p.vertices[k];
   return b;
 }
 

@@ -63,6 +63,16 @@ bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, int tag, const Join
     any_neg |= side[i] == CGAL::ON_NEGATIVE_SIDE;
   }
   if (!any_pos || !any_neg) return false;
+  // A plane that would shave off less than a billionth of the block's size passes along its
+  // face: no sliver.
+  double reach_pos = 0.0, reach_neg = 0.0;
+  const double size = (blk.hi - blk.lo).norm();
+  for (size_t i = 0; i < nv; ++i) {
+    const double d = CGAL::to_double(plane.a() * blk.v[i].x() + plane.b() * blk.v[i].y() +
+                                     plane.c() * blk.v[i].z() + plane.d());
+    reach_pos = std::max(reach_pos, d), reach_neg = std::max(reach_neg, -d);
+  }
+  if (std::min(reach_pos, reach_neg) < 1e-9 * size * jp.normal.norm()) return false;
   std::vector<Point> pts = blk.v;
   // One new vertex per crossing edge, shared by both sides.
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> crossing;
@@ -150,7 +160,11 @@ bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, int tag, const Join
 Vec3 normal_from_dip(double dip, double dip_direction) {
   const double d = dip * std::numbers::pi / 180.0, a = dip_direction * std::numbers::pi / 180.0;
   // The dip vector points down the slope towards the dip direction; the normal is up.
-  return {std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), std::cos(d)};
+  Vec3 n(std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), std::cos(d));
+  // Round-off of sin and cos at whole quadrants would tilt a vertical or level plane by 1e-17.
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(n[k]) < 1e-15) n[k] = 0.0;
+  return n;
 }
 
 std::vector<CutBlock> cut_blocks(const std::vector<CutBlock>& blocks,
