@@ -6,8 +6,10 @@
 #include <iostream>
 
 #include "tessera/generators.hpp"
+#include "tessera/generators3.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/solver.hpp"
+#include "tessera/solver3.hpp"
 
 using namespace tessera;
 
@@ -35,6 +37,27 @@ Model wall_scene(int cols, int rows) {
   return m;
 }
 
+// The same wall in 3D, one brick (1.0 m) thick: 2.0 x 1.0 x 1.0 m bricks, courses along x
+// stacked in z, on a fixed base.
+Model wall3d_scene(int cols, int rows) {
+  Model m;
+  m.dim = 3;
+  m.settings.contact_tolerance = 0.01;
+  m.settings.gravity3 = Vec3(0, 0, -9.81);
+  m.materials.push_back({"brick", 2600.0, {}});
+  JointProperties j;
+  j.name = "mortar", j.kn = 1e10, j.ks = 1e10, j.friction = std::atan(0.6) * 180 / M_PI;
+  j.finalize();
+  m.joints.push_back(j);
+  m.joint_table.push_back({-1, -1, 0});
+  add_block3(m, box(Vec3(-1, -1, -1), Vec3(2.0 * cols + 1, 2, 0)), -1, 0);
+  m.blocks3.fixity[0] = kFix3All;
+  WallSpec3 w;
+  w.length = 2.0, w.height = 1.0, w.width = 1.0, w.courses = rows, w.bricks = cols, w.material = 0;
+  add_wall3(m, w);
+  return m;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -43,7 +66,7 @@ int main(int argc, char** argv) {
   int cols = 100, rows = 50, threads = 1;
   uint64_t cycles = 1000;
   double ratio = 0.0;
-  app.add_option("--scene", scene, "Scene to run")->check(CLI::IsMember({"wall"}));
+  app.add_option("--scene", scene, "Scene to run")->check(CLI::IsMember({"wall", "wall3d"}));
   app.add_option("--cols", cols, "Bricks per course")->check(CLI::PositiveNumber);
   app.add_option("--rows", rows, "Courses")->check(CLI::PositiveNumber);
   app.add_option("--cycles", cycles, "Cycles to run");
@@ -52,12 +75,15 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   set_thread_count(threads);
-  Model m = wall_scene(cols, rows);
+  Model m = scene == "wall3d" ? wall3d_scene(cols, rows) : wall_scene(cols, rows);
   Profile profile;
   run_options().profile = &profile;
   run_options().validate = false;
   prepare(m);
-  detect_contacts(m);
+  if (m.dim == 3)
+    detect_contacts3(m);
+  else
+    detect_contacts(m);
   profile = Profile{};
   const auto t0 = std::chrono::steady_clock::now();
   uint64_t ran = 0;
@@ -71,6 +97,12 @@ int main(int argc, char** argv) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double per_cycle = seconds / static_cast<double>(std::max<uint64_t>(ran, 1));
+  // Contacts: block pairs (2D corner contacts); in 3D also the sub-contacts updated per cycle.
+  size_t contacts = m.dim == 3 ? m.contacts3.size() : m.contacts.size(), updates = contacts;
+  if (m.dim == 3) {
+    updates = 0;
+    for (const Contact3& c : m.contacts3) updates += c.subs.size();
+  }
   std::string stages;
   for (int s = 0; s < kStageCount; ++s)
     stages += fmt::format("{}\"{}_ms\": {:.4f}", s ? ", " : "", stage_name(s),
@@ -79,11 +111,12 @@ int main(int argc, char** argv) {
   std::cout
       << fmt::format(
              "{{\"scene\": \"{}\", \"cols\": {}, \"rows\": {}, \"threads\": {}, \"blocks\": {}, "
-             "\"contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, \"ms_per_cycle\": {:.4f}, "
-             "\"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": {:.4g}, \"ratio\": {:.3e}, "
+             "\"contacts\": {}, \"sub_contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, "
+             "\"ms_per_cycle\": {:.4f}, \"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": "
+             "{:.4g}, \"ratio\": {:.3e}, "
              "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}}}",
-             scene, cols, rows, threads, m.blocks.size(), m.contacts.size(), ran, seconds,
-             1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(m.contacts.size()) / per_cycle,
+             scene, cols, rows, threads, m.block_count(), contacts, m.dim == 3 ? updates : 0, ran,
+             seconds, 1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(updates) / per_cycle,
              m.ratio, converged ? "true" : "false", m.detection_passes, stages)
       << std::endl;
   return 0;

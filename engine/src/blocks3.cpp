@@ -23,6 +23,7 @@ Vec3 newell_normal(const std::vector<Vec3>& v, const std::vector<uint32_t>& face
 // Copies block b of src onto the end of dst.
 void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.body.push_back(src.body[b]);
+  dst.omega.push_back(src.omega[b]);
   dst.force.push_back(src.force[b]), dst.torque.push_back(src.torque[b]);
   dst.applied.push_back(src.applied[b]), dst.ref.push_back(src.ref[b]);
   dst.ref_q.push_back(src.ref_q[b]);
@@ -71,6 +72,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   const size_t b = size_t(body.size());
   RigidBody3 rb = make_body(s, density);
   body.push_back(rb);
+  omega.push_back(Vec3::Zero());
   force.push_back(Vec3::Zero()), torque.push_back(Vec3::Zero()), applied.push_back(0.0);
   ref.push_back(s.centroid), ref_q.push_back(rb.orientation);
   fixity.push_back(0), fixed_v.push_back(Vec3::Zero()), fixed_w.push_back(Vec3::Zero());

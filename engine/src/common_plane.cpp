@@ -25,22 +25,25 @@ PlaneFit evaluate_plane(const Blocks3& B, uint32_t a, uint32_t b, uint8_t kind, 
   f.kind = kind, f.ia = ia, f.ib = ib;
   if (kind == kPlaneFaceB) {
     f.normal = B.world_normal[ib];
-    f.gap = min_dot(B, a, f.normal) - B.world_offset[ib];
+    f.lo_a = min_dot(B, a, f.normal), f.hi_b = B.world_offset[ib];
+    f.gap = f.lo_a - f.hi_b;
   } else if (kind == kPlaneFaceA) {
     f.normal = -B.world_normal[ia];
-    f.gap = -B.world_offset[ia] - max_dot(B, b, f.normal);
+    f.lo_a = -B.world_offset[ia], f.hi_b = max_dot(B, b, f.normal);
+    f.gap = f.lo_a - f.hi_b;
   } else {
     Vec3 n = B.world_dir[ia].cross(B.world_dir[ib]);
     const double len = n.norm();
     if (len < 1e-3) return f;
     n /= len;
     // Either sign of the cross product: the one that separates better.
-    const double up = min_dot(B, a, n) - max_dot(B, b, n);
-    const double gap_down = min_dot(B, a, -n) - max_dot(B, b, -n);
-    if (up >= gap_down)
-      f.normal = n, f.gap = up;
+    const double lo_up = min_dot(B, a, n), hi_up = max_dot(B, b, n);
+    const double lo_down = -max_dot(B, a, n), hi_down = -min_dot(B, b, n);
+    if (lo_up - hi_up >= lo_down - hi_down)
+      f.normal = n, f.lo_a = lo_up, f.hi_b = hi_up;
     else
-      f.normal = -n, f.gap = gap_down;
+      f.normal = -n, f.lo_a = lo_down, f.hi_b = hi_down;
+    f.gap = f.lo_a - f.hi_b;
   }
   return f;
 }

@@ -65,10 +65,10 @@ inline double sgn(double v) {
   return (v > 0.0) - (v < 0.0);
 }
 
-// Rotation angle between two orientations.
+// An upper bound of the rotation angle between two orientations (2 asin s <= pi s, with s the
+// sine of the half angle), cheaper than the angle itself.
 double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
-  const double c = std::min(1.0, std::abs(q0.dot(q1)));
-  return 2.0 * std::acos(c);
+  return M_PI * (q0.conjugate() * q1).vec().norm();
 }
 
 void build_adjacency3(Model& m) {
@@ -149,7 +149,7 @@ void move_blocks3(Model& m) {
         Vec3 f = B.force[b], t = B.torque[b];
         unbalanced[b] = f.norm();
         // Local damping on each component against its velocity; global viscous damping.
-        const Vec3 v = body.velocity, w = body.angular_velocity();
+        const Vec3 v = body.velocity, w = B.omega[b];
         for (int k = 0; k < 3; ++k) {
           f[k] -= alpha * std::abs(f[k]) * sgn(v[k]);
           t[k] -= alpha * std::abs(t[k]) * sgn(w[k]);
@@ -162,11 +162,12 @@ void move_blocks3(Model& m) {
         if (fix & kFix3Rot) t = Vec3::Zero(), body.momentum = Vec3::Zero();
         step_body(body, f, t, dt);
       }
+      B.omega[b] = body.mass > 0.0 && fix != kFix3All ? body.angular_velocity() : B.fixed_w[b];
       B.update_world(b);
       drift[b] = (body.position - m.det_pos3[b]).norm() +
                  B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
-      jump[b] = dt * (body.velocity.norm() + B.bound_radius[b] * body.angular_velocity().norm()) /
-                B.bound_radius[b];
+      jump[b] =
+          dt * (body.velocity.norm() + B.bound_radius[b] * B.omega[b].norm()) / B.bound_radius[b];
       if (!std::isfinite(jump[b])) jump[b] = 1e300;
     }
   });
@@ -279,6 +280,11 @@ void prepare3(Model& m) {
     if (B.body[b].mass <= 0.0 && B.fixity[b] != kFix3All)
       throw ModelError("block " + std::to_string(B.id[b]) +
                        " has no mass: give it a material with a density");
+  // Angular velocities from the momenta (a script may have set either).
+  for (size_t b = 0; b < B.size(); ++b)
+    m.blocks3.omega[b] = B.body[b].mass > 0.0 && B.fixity[b] != kFix3All
+                             ? B.body[b].angular_velocity()
+                             : B.fixed_w[b];
   if (m.dt_dirty) {
     m.dt = compute_timestep3(m);
     m.dt_dirty = false;

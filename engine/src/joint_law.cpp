@@ -48,7 +48,7 @@ class CoulombLaw final : public JointLaw {
     s.shear_disp2 += dus2;
     // Shear magnitude (the 2D form has one component and stays exact).
     const bool plane = s.fs2 == 0.0;
-    const double mag = plane ? std::abs(s.fs) : std::hypot(s.fs, s.fs2);
+    const double mag = plane ? std::abs(s.fs) : std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
     double limit = (bonded ? p.cohesion * L : 0.0) + s.fn * p.tan_friction;
     if (mag > std::max(limit, 0.0)) {
       // Shear failure of a bond leaves friction only.
@@ -66,9 +66,11 @@ class CoulombLaw final : public JointLaw {
       }
       s.flags |= kSlipping;
       const double travel =
-          plane ? std::abs(s.shear_disp) : std::hypot(s.shear_disp, s.shear_disp2);
+          plane ? std::abs(s.shear_disp)
+                : std::sqrt(s.shear_disp * s.shear_disp + s.shear_disp2 * s.shear_disp2);
       if (p.tan_dilation > 0.0 && (p.dilation_limit <= 0.0 || travel < p.dilation_limit))
-        s.dilation += p.tan_dilation * (dus2 == 0.0 ? std::abs(dus) : std::hypot(dus, dus2));
+        s.dilation +=
+            p.tan_dilation * (dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2));
     }
   }
 };

@@ -30,8 +30,18 @@ namespace {
 // that axis at the rate pi_k / I_k; the world angular momentum does not change.
 void rotate_about(RigidBody3& b, int k, double h) {
   const Vec3 body = b.orientation.conjugate() * b.momentum;
-  const double angle = h * body[k] / b.principal[k];
-  b.orientation = b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(angle, Vec3::Unit(k)));
+  const double half = 0.5 * h * body[k] / b.principal[k];
+  // cos and sin of the half angle; below 1e-4 rad their series are exact in double precision.
+  const double h2 = half * half;
+  const double c = h2 < 1e-8 ? 1.0 - 0.5 * h2 + h2 * h2 / 24.0 : std::cos(half);
+  const double s = h2 < 1e-8 ? half * (1.0 - h2 / 6.0) : std::sin(half);
+  // q * (c, s e_k), written out.
+  const Eigen::Quaterniond& q = b.orientation;
+  const Vec3 v = q.vec();
+  Vec3 e = Vec3::Zero();
+  e[k] = s;
+  const Vec3 vec = q.w() * e + c * v + v.cross(e);
+  b.orientation = Eigen::Quaterniond(q.w() * c - v[k] * s, vec.x(), vec.y(), vec.z());
 }
 }  // namespace
 

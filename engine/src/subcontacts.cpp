@@ -40,6 +40,8 @@ uint32_t facing_face(const Blocks3& B, uint32_t b, const Vec3& dir, double suppo
   uint32_t best = current;
   const bool valid =
       current >= B.face_begin[b] && current < B.face_begin[b + 1] && touches(current);
+  // A face lying along the plane is kept without a search (face-to-face contacts, the most).
+  if (valid && B.world_normal[current].dot(dir) > 1.0 - 1e-6) return current;
   double best_dot = valid ? B.world_normal[current].dot(dir) + 1e-3 : -2.0;
   for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
     const double d = B.world_normal[f].dot(dir);
@@ -110,7 +112,7 @@ void update_contact3(const Model& m, Contact3& c) {
     c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
   }
   const Vec3 n = fit.normal;
-  const double lo_a = min_dot(B, a, n), hi_b = max_dot(B, b, n);
+  const double lo_a = fit.lo_a, hi_b = fit.hi_b;
   c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
   c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
   c.face_b = facing_face(B, b, n, hi_b, c.face_b);
@@ -155,7 +157,6 @@ void update_contact3(const Model& m, Contact3& c) {
   const double mna = ma.dot(n), mnb = mb.dot(n);
   const RigidBody3& ba = B.body[a];
   const RigidBody3& bb = B.body[b];
-  const Mat3 ra_t = ba.orientation.conjugate().toRotationMatrix();
   const double tol = m.tolerance();
   std::vector<uint8_t> used(w.old.size(), 0);
   for (size_t i = 0; i < np && std::abs(mna) > 0.05 && std::abs(mnb) > 0.05; ++i) {
@@ -170,15 +171,14 @@ void update_contact3(const Model& m, Contact3& c) {
     // Heights of the two faces above the plane along n.
     const double ha = (da - ma.dot(s.point)) / mna, hb = (db - mb.dot(s.point)) / mnb;
     s.gap = ha - hb;
-    s.local_a = ra_t * (s.point - ba.position);
-    // The joint state of last cycle's sub-contact with this key, or the nearest within the
-    // tolerance in a's frame.
+    // The joint state of last cycle's sub-contact with this key, or else the nearest within
+    // the tolerance (blocks move far less in a step).
     int match = -1;
     for (size_t o = 0; o < w.old.size() && match < 0; ++o)
       if (!used[o] && w.old[o].key == s.key) match = static_cast<int>(o);
     double best = tol;
     for (size_t o = 0; o < w.old.size() && match < 0; ++o) {
-      const double d = (w.old[o].local_a - s.local_a).norm();
+      const double d = (w.old[o].point - s.point).norm();
       if (!used[o] && d < best) best = d, match = static_cast<int>(o);
     }
     if (match < 0) {
@@ -206,7 +206,8 @@ void update_contact3(const Model& m, Contact3& c) {
   // The joint law at every sub-contact.
   const double dt = m.dt;
   const JointProperties& jp = m.joints[c.joint];
-  const Vec3 wa = ba.angular_velocity(), wb = bb.angular_velocity();
+  const Vec3& wa = B.omega[a];
+  const Vec3& wb = B.omega[b];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
   for (SubContact& s : c.subs) {
@@ -231,7 +232,7 @@ void update_contact3(const Model& m, Contact3& c) {
     c.force += s.force;
     c.torque_a += ra.cross(s.force);
     c.torque_b -= rb.cross(s.force);
-    c.force_mag += std::abs(st.fn) + std::hypot(st.fs, st.fs2);
+    c.force_mag += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
   }
 }
 

@@ -22,6 +22,8 @@ enum Fixity3 : uint8_t { kFix3X = 1, kFix3Y = 2, kFix3Z = 4, kFix3Rot = 8, kFix3
 
 struct Blocks3 {
   std::vector<RigidBody3> body;
+  // World angular velocity at the half step, refreshed with the motion (read by the contacts).
+  std::vector<Vec3> omega;
   // Force and torque (about the centroid) of the current cycle, and the sum of the magnitudes
   // of all forces applied (for the unbalanced-force ratio).
   std::vector<Vec3> force, torque;

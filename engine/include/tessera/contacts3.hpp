@@ -18,8 +18,9 @@
 // once, so no halving of forces is needed. Each takes half of the two fan triangles (from the
 // polygon's centroid) beside it as its area, so the areas add up to the contact area; its gap is
 // measured between the two faces along the normal. A sub-contact keeps its joint state from
-// cycle to cycle by its key (which features make it), or failing that by its position in a's
-// frame, so shear force survives while the overlap polygon changes shape.
+// cycle to cycle by its key (which features make it), or failing that by its position (the
+// nearest within the tolerance: blocks move far less in a step), so shear force survives while
+// the overlap polygon changes shape.
 //
 // The shear force is a vector in the CP, kept in world coordinates and turned with the plane each
 // cycle (its magnitude kept); the joint law sees it in the plane's two tangent directions.
@@ -40,8 +41,7 @@ enum ContactType3 : uint8_t { kVertexFace = 0, kEdgeEdge = 1, kEdgeFace = 2, kFa
 
 struct SubContact {
   uint64_t key = 0;
-  Vec3 point = Vec3::Zero();    // on the common plane
-  Vec3 local_a = Vec3::Zero();  // the point in a's body frame (for matching next cycle)
+  Vec3 point = Vec3::Zero();  // on the common plane
   double area = 0.0, gap = 0.0;
   // Joint law state: normal force (compression positive), world shear force on a, normal
   // displacement of the last cycle, dilation, total shear displacement (two components).

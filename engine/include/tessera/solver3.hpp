@@ -14,6 +14,7 @@ struct PlaneFit {
   uint32_t ia = 0, ib = 0;
   Vec3 normal = Vec3::UnitZ();
   double gap = -1e300;
+  double lo_a = 0.0, hi_b = 0.0;  // support values of a and b along the normal
 };
 // Support values of block b along n: the least and greatest n . x over its vertices.
 double min_dot(const Blocks3& B, uint32_t b, const Vec3& n);
