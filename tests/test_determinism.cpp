@@ -50,6 +50,14 @@ class TestDeterminism : public QObject {
     const uint64_t one = run(1, 150);
     QCOMPARE(run(2, 150), one);
     QVERIFY(one != run(1, 1));
+    // Save part way, restore, go on: the same state bit for bit.
+    ScriptRun straight, first, second;
+    straight.run(wall + "step 100");
+    first.run(wall + "step 60\nsave half3.sav\nstep 40");
+    QCOMPARE(state_hash(first.model()), state_hash(straight.model()));
+    second.run("restore " + first.path("half3.sav") + "\nstep 40");
+    QCOMPARE(second.model().dim, uint8_t(3));
+    QCOMPARE(state_hash(second.model()), state_hash(straight.model()));
   }
   void sameAtOneAndTwoThreads() {
     const uint64_t one = run_wall(1, 120), two = run_wall(2, 120);

@@ -14,7 +14,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
   static const std::map<std::string, Handler> h = [] {
     std::map<std::string, Handler> t = handlers();
     for (const char* only2d : {"tunnel", "voronoi", "arch", "join", "zone", "boundary", "insitu",
-                               "figure", "save", "restore", "round"})
+                               "figure", "round"})
       t[only2d] = &Interpreter::cmd_only2d;
     t["block"] = &Interpreter::cmd_block3;
     t["region"] = &Interpreter::cmd_region3;

@@ -15,7 +15,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 6;
+constexpr uint32_t kVersion = 7;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 class Writer {
@@ -150,6 +150,28 @@ void fields(IO& io, auto& m) {
       io.vec(Z.stress);
   io.vec(Z.state), io.vec(Z.material), io.pod(Z.local_damping), io.pod(Z.dt), io.pod(Z.time);
   io.pod(Z.cycle), io.pod(Z.ratio), io.vec(m.det_node);
+  // 3D models.
+  io.pod(m.dim), io.pod(S.gravity3.x()), io.pod(S.gravity3.y()), io.pod(S.gravity3.z());
+  auto& B3 = m.blocks3;
+  io.vec(B3.body), io.vec(B3.omega), io.vec(B3.force), io.vec(B3.torque), io.vec(B3.applied);
+  io.vec(B3.ref), io.vec(B3.ref_q), io.vec(B3.fixity), io.vec(B3.fixed_v), io.vec(B3.fixed_w);
+  io.vec(B3.volume), io.vec(B3.surface), io.vec(B3.bound_radius), io.vec(B3.vert_begin);
+  io.vec(B3.local_vertex), io.vec(B3.world_vertex), io.vec(B3.face_begin), io.vec(B3.fv_begin);
+  io.vec(B3.face_vert), io.vec(B3.local_normal), io.vec(B3.world_normal), io.vec(B3.world_offset);
+  io.vec(B3.face_tag), io.vec(B3.dir_begin), io.vec(B3.local_dir), io.vec(B3.world_dir);
+  io.vec(B3.group), io.vec(B3.material), io.vec(B3.id);
+  count = m.contacts3.size();
+  io.pod(count);
+  m.contacts3.resize(count);
+  for (auto& c : m.contacts3) {
+    io.pod(c.a), io.pod(c.b), io.pod(c.joint), io.pod(c.tag), io.pod(c.kind), io.pod(c.ia);
+    io.pod(c.ib), io.pod(c.face_a), io.pod(c.face_b), io.pod(c.type);
+    for (int k = 0; k < 3; ++k) io.pod(c.normal[k]);
+    io.pod(c.offset), io.pod(c.gap), io.vec(c.subs);
+    for (int k = 0; k < 3; ++k) io.pod(c.force[k]), io.pod(c.torque_a[k]), io.pod(c.torque_b[k]);
+    io.pod(c.force_mag);
+  }
+  io.vec(m.det_pos3), io.vec(m.det_q3);
 }
 
 }  // namespace
