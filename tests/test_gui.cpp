@@ -215,6 +215,51 @@ class TestGui : public QObject {
     QCOMPARE(w.properties()->value("group"), QString("left"));
   }
 
+  // A 3D model in the window: the projected faces drawn with their group colours (shaded), a
+  // right drag turns the viewpoint and the picture, a click picks the nearest block.
+  void showsAndTurnsA3dModel() {
+    const QString path = write_script(dir_, "wall3d.tess",
+                                      "dimension 3\ntolerance 0.01\n"
+                                      "material define stone density=2200\n"
+                                      "joint define dry kn=5e10 ks=2e10 friction=35\n"
+                                      "joint assign dry\n"
+                                      "block box -0.5,-0.3,-0.4 4.1,0.6,0 group=footing "
+                                      "material=stone\nfix group=footing\n"
+                                      "wall brick=0.6,0.3,0.3 courses=6 bricks=6 group=wall "
+                                      "material=stone\ngravity 0 0 -9.81\nstep 50\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    QVERIFY(w.snapshot()->three);
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(1 + 6 * 6 + 3));
+    ViewOptions o = w.viewOptions();
+    o.contacts = ContactShow::kOff;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const QImage img = w.view()->grabFramebuffer();
+    // The middle of the view is the wall: a shade of its group colour, not background.
+    const QColor mid = img.pixelColor(img.width() / 2 - img.width() / 10, img.height() / 2);
+    const Rgb wall = category(1);
+    qInfo("centre pixel %s, wall colour %d,%d,%d", qPrintable(mid.name()), wall.r, wall.g, wall.b);
+    QVERIFY(mid != QColor(255, 255, 255));
+    QVERIFY(std::abs(mid.red() * wall.g - mid.green() * wall.r) < 12 * 255);
+    const double azimuth = w.viewOptions().azimuth;
+    const QPoint c(w.view()->width() / 2, w.view()->height() / 2);
+    QTest::mousePress(w.view(), Qt::RightButton, {}, c);
+    QMouseEvent move(QEvent::MouseMove, QPointF(c + QPoint(60, 0)), QPointF(c + QPoint(60, 0)),
+                     Qt::RightButton, Qt::RightButton, Qt::NoModifier);
+    QApplication::sendEvent(w.view(), &move);
+    QTest::mouseRelease(w.view(), Qt::RightButton, {}, c + QPoint(60, 0));
+    QVERIFY(std::abs(w.viewOptions().azimuth - azimuth) > 10);
+    QTest::qWait(100);
+    const QImage turned = w.view()->grabFramebuffer();
+    QVERIFY(turned != img);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS")) {
+      img.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d.png");
+      turned.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d_turned.png");
+    }
+  }
+
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in
   // ramp colours, compressive blue at the foot, near zero red at the top; by state, four entries.
   void framebufferShowsZoneStresses() {

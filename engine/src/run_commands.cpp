@@ -179,7 +179,7 @@ void Interpreter::cmd_figure(Args& a) {
   if (a.words.size() != 1)
     fail(
         "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [vectors=on] "
-        "[magnify=F] [window=X0,Y0,X1,Y1] [title=\"...\"]'");
+        "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [title=\"...\"]'");
   FigureRequest r;
   const std::string ext = fs::path(a.words[0]).extension().string();
   if (ext != ".png" && ext != ".svg" && ext != ".pdf")
@@ -209,6 +209,13 @@ void Interpreter::cmd_figure(Args& a) {
     if (!(r.view.hi.x() > r.view.lo.x() && r.view.hi.y() > r.view.lo.y()))
       fail("the window's second corner must be above and right of the first");
     r.view.has_window = true;
+  }
+  if (take(a, "view", v)) {
+    if (model_.dim != 3) fail("view= sets the viewpoint of 3D models; this model is 2D");
+    const Vec2 ae = point(v);
+    if (!(ae.y() >= -90.0 && ae.y() <= 90.0))
+      fail("write view=AZIMUTH,ELEVATION with the elevation in [-90, 90] degrees");
+    r.view.azimuth = ae.x(), r.view.elevation = ae.y();
   }
   if (take(a, "title", v)) {
     if (v.size() > 1 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);

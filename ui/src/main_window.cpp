@@ -22,6 +22,8 @@
 #include <QStatusBar>
 #include <QTextStream>
 #include <QToolBar>
+#include <algorithm>
+#include <cmath>
 
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/figure_writer.hpp"
@@ -56,6 +58,11 @@ MainWindow::MainWindow(QWidget* parent)
   connect(worker_, &SolverWorker::finished, this, &MainWindow::onFinished);
   thread_.start();
   connect(console_, &ConsoleWidget::command, this, &MainWindow::runCommand);
+  connect(view_, &VtkView::turned, this, [this](double azimuth, double elevation) {
+    options_.azimuth = std::fmod(options_.azimuth + azimuth + 360.0, 360.0);
+    options_.elevation = std::clamp(options_.elevation + elevation, -89.0, 89.0);
+    redraw();
+  });
   connect(view_, &VtkView::picked, this, [this](int block, int contact) {
     if (!shown_) return;
     if (contact >= 0)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "scene3d.hpp"
 #include "tessera/contacts.hpp"
 #include "tessera/continuum.hpp"
 
@@ -14,13 +15,13 @@ namespace tessera::ui {
 double block_value(const SnapshotBlock& b, ColourBy c) {
   switch (c) {
     case ColourBy::kDisplacement:
-      return std::hypot(b.x - b.x_ref, b.y - b.y_ref);
+      return std::hypot(b.x - b.x_ref, b.y - b.y_ref, b.z - b.z_ref);
     case ColourBy::kXDisp:
       return b.x - b.x_ref;
     case ColourBy::kYDisp:
       return b.y - b.y_ref;
     case ColourBy::kVelocity:
-      return std::hypot(b.vx, b.vy);
+      return std::hypot(b.vx, b.vy, b.vz);
     case ColourBy::kRotation:
       return b.theta * 180.0 / std::numbers::pi;
     case ColourBy::kGroup:
@@ -165,6 +166,11 @@ ScenePolygon block_polygon(const Snapshot& s, size_t b, double magnify, Rgb colo
 
 // Colours the block polygons and fills their legend.
 void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  if (colours_zones(o.colour) && s.three) {
+    // 3D blocks have no zones: grey, as rigid blocks are in a picture of zones.
+    out.blocks_legend.title = value_title(o.colour) + " (no zones in 3D)";
+    return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out);
+  }
   if (colours_zones(o.colour)) {
     add_zones(s, o, out);
     for (size_t b = 0; b < s.blocks.size(); ++b)
@@ -184,11 +190,14 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
       L.entries.push_back(
           {groups ? s.groups[i] : s.materials[i].name, category(static_cast<int>(i))});
   }
+  std::vector<Rgb> colours;
   for (size_t b = 0; b < s.blocks.size(); ++b) {
     const double v = block_value(s.blocks[b], o.colour);
-    out.polygons.push_back(block_polygon(
-        s, b, o.magnify, categorical ? category(static_cast<int>(v)) : ramp((v - lo) / (hi - lo))));
+    colours.push_back(categorical ? category(static_cast<int>(v)) : ramp((v - lo) / (hi - lo)));
   }
+  if (s.three) return add_faces3(s, o, colours, out);
+  for (size_t b = 0; b < s.blocks.size(); ++b)
+    out.polygons.push_back(block_polygon(s, b, o.magnify, colours[b]));
 }
 
 // Contact bars along the joint: width from the normal force, colour from the option.
@@ -221,7 +230,9 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
                  {"bonded", bonded_colour()}};
   } else {
     L.continuous = true;
-    L.title = o.contacts == ContactShow::kForce ? "normal force [N/m]" : "shear displacement [m]";
+    L.title = o.contacts == ContactShow::kForce
+                  ? (s.three ? "normal force [N]" : "normal force [N/m]")
+                  : "shear displacement [m]";
     L.lo = 0, L.hi = o.contacts == ContactShow::kForce ? fmax : smax;
     if (L.hi <= 0) L.hi = 1;
   }
@@ -262,7 +273,8 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
     bar.corners[3] = a + 0.5 * w * c.normal;
     out.bars.push_back(bar);
   }
-  out.caption += "   contact width: normal force, full at " + number(fwide) + " N/m (largest " +
+  const std::string unit = s.three ? " N" : " N/m";
+  out.caption += "   contact width: normal force, full at " + number(fwide) + unit + " (largest " +
                  number(fmax) + ")";
 }
 
@@ -291,11 +303,29 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
                 static_cast<unsigned long long>(s.cycle), s.time, s.ratio);
   out.caption = buf;
   if (o.magnify != 1.0) out.caption += "   displacements x" + number(o.magnify);
-  const double size = std::max((s.hi - s.lo).norm(), 1e-9);
   add_blocks(s, o, out);
-  add_contacts(s, o, out, size);
-  add_arrows(s, o, out, size);
-  out.lo = s.lo, out.hi = s.hi;
+  out.three = s.three;
+  if (s.three) {
+    // Contacts and arrows of the projected model; the view box from the faces drawn.
+    const Snapshot flat = flatten3(s, o);
+    Vec2 lo = Vec2::Constant(1e300), hi = Vec2::Constant(-1e300);
+    for (const auto& p : out.polygons)
+      for (const Vec2& v : p.points) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    if (out.polygons.empty()) lo = hi = Vec2::Zero();
+    const double size = std::max((hi - lo).norm(), 1e-9);
+    add_contacts(flat, o, out, size);
+    add_arrows(flat, o, out, size);
+    out.lo = lo, out.hi = hi;
+    char view[80];
+    std::snprintf(view, sizeof view, "   view from azimuth %.0f, elevation %.0f", o.azimuth,
+                  o.elevation);
+    out.caption += view;
+  } else {
+    const double size = std::max((s.hi - s.lo).norm(), 1e-9);
+    add_contacts(s, o, out, size);
+    add_arrows(s, o, out, size);
+    out.lo = s.lo, out.hi = s.hi;
+  }
   for (const auto& b : s.blocks) out.deformable_blocks.push_back(b.deformable);
   // Magnified shapes may leave the box the live model fills.
   for (const auto& list : {&out.polygons, &out.zones})
@@ -321,9 +351,9 @@ bool inside(const Vec2* pts, size_t n, Vec2 p) {
 }  // namespace
 
 int block_at(const Scene& scene, Vec2 p) {
-  for (const auto& poly : scene.polygons)
-    if (poly.points.size() >= 3 && inside(poly.points.data(), poly.points.size(), p))
-      return poly.block;
+  // The polygon drawn last (in 3D the nearest) wins.
+  for (auto it = scene.polygons.rbegin(); it != scene.polygons.rend(); ++it)
+    if (it->points.size() >= 3 && inside(it->points.data(), it->points.size(), p)) return it->block;
   return -1;
 }
 

@@ -66,6 +66,12 @@ void copy_catalogue(const Model& m, Snapshot& s) {
                         {{"blocks", std::to_string(ids.size())}, {"ids", list}});
     s.conditions.push_back(std::move(e));
   }
+  const Vec3& g3 = m.settings.gravity3;
+  if (m.dim == 3 && g3.norm() > 0)
+    s.conditions.push_back({"gravity",
+                            {{"gx", number(g3.x()) + " m/s²"},
+                             {"gy", number(g3.y()) + " m/s²"},
+                             {"gz", number(g3.z()) + " m/s²"}}});
   if (m.settings.gravity.norm() > 0)
     s.conditions.push_back({"gravity",
                             {{"gx", number(m.settings.gravity.x()) + " m/s²"},
@@ -128,6 +134,61 @@ void copy_zones(const Model& m, Snapshot& s) {
     s.zones.push_back(o);
   }
 }
+void copy_stages(const std::vector<StageRecord>& stages, Snapshot& s) {
+  for (const StageRecord& st : stages)
+    s.stages.push_back(
+        {st.command,
+         {{"at", st.file + ":" + std::to_string(st.line)},
+          {"cycles", std::to_string(st.first_cycle) + " to " + std::to_string(st.last_cycle)},
+          {"converged", st.converged ? "yes" : "no"}}});
+}
+
+// 3D models: blocks (centroid, displacement, velocity, angle turned), every face as a polygon of
+// world points, every sub-contact.
+void copy_blocks3(const Model& m, Snapshot& s) {
+  const Blocks3& B = m.blocks3;
+  s.three = true;
+  s.blocks.resize(B.size());
+  bool first = true;
+  for (size_t b = 0; b < B.size(); ++b) {
+    SnapshotBlock& o = s.blocks[b];
+    const RigidBody3& body = B.body[b];
+    o.id = B.id[b], o.group = B.group[b], o.material = B.material[b];
+    o.x = body.position.x(), o.y = body.position.y(), o.z = body.position.z();
+    o.x_ref = B.ref[b].x(), o.y_ref = B.ref[b].y(), o.z_ref = B.ref[b].z();
+    o.vx = body.velocity.x(), o.vy = body.velocity.y(), o.vz = body.velocity.z();
+    o.theta = 2.0 * std::acos(std::min(1.0, std::abs(body.orientation.dot(B.ref_q[b]))));
+    o.omega = B.omega[b].norm();
+    o.area = B.volume[b], o.mass = body.mass, o.fixity = B.fixity[b];
+    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
+      Snapshot::Face3 face;
+      face.block = static_cast<int>(b);
+      face.begin = static_cast<uint32_t>(s.points3.size());
+      for (uint32_t k = B.fv_begin[f]; k < B.fv_begin[f + 1]; ++k)
+        s.points3.push_back(B.world_vertex[B.face_vert[k]]);
+      face.end = static_cast<uint32_t>(s.points3.size());
+      s.faces3.push_back(face);
+    }
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
+      const Vec2 w(B.world_vertex[v].x(), B.world_vertex[v].y());
+      s.lo = first ? w : s.lo.cwiseMin(w), s.hi = first ? w : s.hi.cwiseMax(w);
+      first = false;
+    }
+  }
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& sub : c.subs) {
+      SnapshotContact o;
+      o.a = static_cast<int>(c.a), o.b = static_cast<int>(c.b);
+      o.point3 = sub.point, o.normal3 = c.normal;
+      o.point = o.from = o.to = Vec2(sub.point.x(), sub.point.y());
+      o.length = 0.5 * std::sqrt(sub.area), o.gap = sub.gap, o.fn = sub.fn, o.fs = sub.fs.norm();
+      o.shear_disp = std::hypot(sub.sd1, sub.sd2), o.flags = sub.flags;
+      if (c.joint < m.joints.size()) o.joint = m.joints[c.joint].name;
+      if (c.tag >= 0 && static_cast<size_t>(c.tag) < m.joint_tags.size())
+        o.joint_set = m.joint_tags[static_cast<size_t>(c.tag)];
+      s.contacts.push_back(std::move(o));
+    }
+}
 }  // namespace
 
 Snapshot make_snapshot(const Model& m, const std::string& title,
@@ -135,6 +196,13 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
   Snapshot s;
   s.title = title;
   s.cycle = m.cycle, s.time = m.time, s.dt = m.dt, s.ratio = m.ratio;
+  if (m.dim == 3) {
+    copy_blocks3(m, s);
+    copy_catalogue(m, s);
+    copy_stages(stages, s);
+    copy_histories(m, s);
+    return s;
+  }
   const Blocks& B = m.blocks;
   s.blocks.resize(B.size());
   s.local.reserve(B.local_vertex.size());
@@ -189,12 +257,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
   set_joint_stretches(C, s);
   copy_zones(m, s);
   copy_catalogue(m, s);
-  for (const StageRecord& st : stages)
-    s.stages.push_back(
-        {st.command,
-         {{"at", st.file + ":" + std::to_string(st.line)},
-          {"cycles", std::to_string(st.first_cycle) + " to " + std::to_string(st.last_cycle)},
-          {"converged", st.converged ? "yes" : "no"}}});
+  copy_stages(stages, s);
   copy_histories(m, s);
   return s;
 }

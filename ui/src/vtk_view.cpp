@@ -30,9 +30,10 @@
 namespace tessera::ui {
 
 namespace {
-// A polydata of filled polygons with one RGB colour per cell.
+// A polydata of filled polygons with one RGB colour per cell, at height z, each `dz` above the
+// one before (3D scenes come in painter's order: the nearest face last, so highest).
 void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
-                   const std::vector<Rgb>& colours, double z) {
+                   const std::vector<Rgb>& colours, double z, double dz = 0.0) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkUnsignedCharArray> rgb;
@@ -40,7 +41,9 @@ void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
   rgb->SetName("colour");
   for (size_t i = 0; i < polys.size(); ++i) {
     cells->InsertNextCell(static_cast<int>(polys[i].size()));
-    for (const Vec2& v : polys[i]) cells->InsertCellPoint(points->InsertNextPoint(v.x(), v.y(), z));
+    const double zi = z + dz * static_cast<double>(i);
+    for (const Vec2& v : polys[i])
+      cells->InsertCellPoint(points->InsertNextPoint(v.x(), v.y(), zi));
     const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
     rgb->InsertNextTypedTuple(c);
   }
@@ -204,9 +207,18 @@ void VtkView::rebuild() {
   std::vector<std::vector<Vec2>> polys;
   std::vector<Rgb> colours;
   for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
-  fill_polygons(blocks_, polys, colours, 0.0);
-  // Block outlines above the zones, which sit above the block fills.
-  fill_polygons(edges_, polys, colours, 0.006);
+  if (scene_.three) {
+    // Faces stacked in drawing order below the contacts, each outline just above its face.
+    const double dz = 0.0025 / static_cast<double>(std::max<size_t>(polys.size(), 1));
+    fill_polygons(blocks_, polys, colours, 0.0, dz);
+    fill_polygons(edges_, polys, colours, 0.5 * dz, dz);
+  } else {
+    fill_polygons(blocks_, polys, colours, 0.0);
+    // Block outlines above the zones, which sit above the block fills.
+    fill_polygons(edges_, polys, colours, 0.006);
+  }
+  // Axes in model coordinates mean nothing on a 3D view (its scale bar is in the caption).
+  scale_->SetVisibility(!scene_.three);
   std::vector<std::array<Vec2, 2>> outline = highlight_segments_;
   for (const auto& p : scene_.polygons)
     if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
@@ -420,6 +432,9 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
     cam->GetFocalPoint(f), cam->GetPosition(p);
     cam->SetFocalPoint(f[0] + shift.x(), f[1] + shift.y(), f[2]);
     cam->SetPosition(p[0] + shift.x(), p[1] + shift.y(), p[2]);
+  } else if (button_ == Qt::RightButton && scene_.three) {
+    // 3D models: turn the viewpoint (the window rebuilds the picture).
+    emit turned(-0.4 * d.x(), 0.4 * d.y());
   } else if (button_ == Qt::RightButton) {
     cam->Azimuth(-0.4 * d.x());
     cam->Elevation(0.4 * d.y());

@@ -56,6 +56,9 @@ struct ViewOptions {
   bool has_window = false;  // a window in model coordinates, else the whole model
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
   std::string title;
+  // 3D models: where the (parallel) view looks from - azimuth clockwise from north (+y) and
+  // elevation above the horizon, in degrees. The window is then in view coordinates.
+  double azimuth = 210.0, elevation = 25.0;
 };
 
 // One figure to write: PNG (pixels), SVG or PDF (the same size in points), by the extension.

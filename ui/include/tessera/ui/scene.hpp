@@ -50,6 +50,7 @@ struct Scene {
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // what to show
   double arrow_scale = 0;                     // drawn length per metre of displacement
   std::vector<uint8_t> deformable_blocks;     // by snapshot block index
+  bool three = false;                         // a 3D model, drawn in view coordinates
   bool deformable(int block) const {
     return block >= 0 && static_cast<size_t>(block) < deformable_blocks.size() &&
            deformable_blocks[static_cast<size_t>(block)];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tessera/geometry.hpp"
+#include "tessera/polyhedron.hpp"
 
 namespace tessera {
 struct Model;
@@ -22,6 +23,7 @@ struct SnapshotBlock {
   int id = 0, group = -1, material = -1;
   double x = 0, y = 0, x_ref = 0, y_ref = 0, theta = 0;
   double vx = 0, vy = 0, omega = 0;
+  double z = 0, z_ref = 0, vz = 0;  // 3D models (theta: the angle turned, omega: its rate)
   double area = 0, mass = 0;
   uint8_t fixity = 0;
   bool deformable = false;  // then local holds outline node positions, start their originals
@@ -34,6 +36,9 @@ struct SnapshotContact {
   // The stretch of joint the contact stands for: from the point half way to its neighbours
   // along the same interface (§5.2.2's L = RQ1/2 + RQ2/2); both the point for a lone contact.
   Vec2 from = Vec2::Zero(), to = Vec2::Zero();
+  // 3D models: a sub-contact's point and the common plane's normal (length: half the side of
+  // a square of its area; forces in N).
+  Vec3 point3 = Vec3::Zero(), normal3 = Vec3::Zero();
   double length = 0, gap = 0, fn = 0, fs = 0, shear_disp = 0;
   uint8_t flags = 0;
   std::string joint;      // joint property name
@@ -75,6 +80,14 @@ struct Snapshot {
   std::vector<std::vector<double>> history_values;  // one vector per series
   // Corners of the box around the blocks.
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  // 3D models: every block face as a polygon of world points (blocks keep no 2D outline).
+  bool three = false;
+  struct Face3 {
+    int block = -1;
+    uint32_t begin = 0, end = 0;  // into points3
+  };
+  std::vector<Vec3> points3;
+  std::vector<Face3> faces3;
 };
 
 // Takes a snapshot of the model (block world caches must be current).

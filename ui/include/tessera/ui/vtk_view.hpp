@@ -2,8 +2,9 @@
 //
 // Debian's VTK Qt module is built for Qt5, so VTK is embedded by hand: a
 // vtkGenericOpenGLRenderWindow that draws into the widget's context (the recipe in
-// shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the camera (for 3D
-// models), a click picks the block or contact under the cursor. With a drawing tool on, clicks
+// shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the view (of a 3D
+// model: the window turns the viewpoint and redraws the projected scene), a click picks the
+// block or contact under the cursor. With a drawing tool on, clicks
 // place snapped points (a rubber band shows the shape), a double click or Enter finishes the
 // shape, Escape or a right click drops it. With the select tool, a left drag draws a box (the
 // middle button pans in every mode).
@@ -66,6 +67,8 @@ class VtkView : public QOpenGLWidget {
   void drawn(DrawMode mode, const QVector<QPointF>& points);
   // The select tool's box, in model coordinates.
   void boxSelected(QPointF lo, QPointF hi);
+  // A right drag over a 3D model: turn the viewpoint by these angles (degrees).
+  void turned(double azimuth, double elevation);
   // The select tool clicked within a few pixels of a deformable block's outline edge.
   void edgePicked(int block, QPointF a, QPointF b);
 
