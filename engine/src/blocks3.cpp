@@ -1,5 +1,6 @@
 #include "tessera/blocks3.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -32,6 +33,7 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.volume.push_back(src.volume[b]), dst.surface.push_back(src.surface[b]);
   dst.bound_radius.push_back(src.bound_radius[b]);
   dst.group.push_back(src.group[b]), dst.material.push_back(src.material[b]);
+  dst.master.push_back(src.master[b]);  // renumbered by the caller
   dst.id.push_back(static_cast<int>(dst.id.size()) + 1);
   const uint32_t v_shift = dst.vert_begin.back() - src.vert_begin[b];
   for (uint32_t v = src.vert_begin[b]; v < src.vert_begin[b + 1]; ++v)
@@ -79,6 +81,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   volume.push_back(s.volume);
   group.push_back(group_id), material.push_back(material_id);
   id.push_back(static_cast<int>(b) + 1);
+  master.push_back(static_cast<int32_t>(b));
   // Shape in the principal frame about the centroid.
   const Mat3 to_local = rb.orientation.conjugate().toRotationMatrix();
   const uint32_t v0 = vert_begin.back();
@@ -132,6 +135,14 @@ std::vector<int> Blocks3::remove(const std::vector<uint8_t>& doomed) {
     append_block(kept, *this, b);
     kept.id.back() = id[b];
   }
+  // A slave whose master goes becomes the master of what is left of its body (its frame and
+  // mass stay the body's until the pieces are joined again).
+  for (size_t b = 0; b < kept.size(); ++b) {
+    const int old_master = kept.master[b];
+    kept.master[b] = index[static_cast<size_t>(old_master)] >= 0
+                         ? index[static_cast<size_t>(old_master)]
+                         : static_cast<int32_t>(b);
+  }
   *this = std::move(kept);
   return index;
 }
@@ -152,8 +163,9 @@ void Blocks3::set_density(size_t b, double density) {
 }
 
 void Blocks3::update_world(size_t b) {
-  const Mat3 r = body[b].orientation.toRotationMatrix();
-  const Vec3& c = body[b].position;
+  const RigidBody3& moving = body[static_cast<size_t>(master[b])];
+  const Mat3 r = moving.orientation.toRotationMatrix();
+  const Vec3& c = moving.position;
   for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v)
     world_vertex[v] = c + r * local_vertex[v];
   for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f) {
@@ -161,6 +173,54 @@ void Blocks3::update_world(size_t b) {
     world_offset[f] = world_normal[f].dot(world_vertex[face_vert[fv_begin[f]]]);
   }
   for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
+}
+
+void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>& densities) {
+  // Mass, centroid and inertia about the common centroid (parallel axes).
+  double mass = 0.0;
+  Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
+  std::vector<SolidProperties> props;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    props.push_back(solid_properties(polyhedron(pieces[i])));
+    const double m = densities[i] * props.back().volume;
+    mass += m, centre += m * props.back().centroid;
+    momentum += m * body[static_cast<size_t>(master[pieces[i]])].velocity;
+  }
+  if (!(mass > 0.0)) throw std::invalid_argument("joined blocks need a material with a density");
+  centre /= mass;
+  Mat3 inertia = Mat3::Zero();
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const Vec3 d = props[i].centroid - centre;
+    inertia +=
+        densities[i] * (props[i].inertia +
+                        props[i].volume * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
+  }
+  // Principal frame of the whole, right-handed.
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+  Mat3 axes = eig.eigenvectors();
+  if (axes.determinant() < 0) axes.col(2) *= -1.0;
+  const size_t m0 = pieces.front();
+  RigidBody3 rb;
+  rb.mass = mass, rb.principal = eig.eigenvalues(), rb.position = centre;
+  rb.orientation = Eigen::Quaterniond(axes).normalized();
+  rb.velocity = momentum / mass;
+  const Mat3 to_local = rb.orientation.conjugate().toRotationMatrix();
+  double reach = 0.0;
+  for (size_t p : pieces) {
+    for (uint32_t v = vert_begin[p]; v < vert_begin[p + 1]; ++v) {
+      local_vertex[v] = to_local * (world_vertex[v] - centre);
+      reach = std::max(reach, local_vertex[v].norm());
+    }
+    for (uint32_t f = face_begin[p]; f < face_begin[p + 1]; ++f)
+      local_normal[f] = to_local * world_normal[f];
+    for (uint32_t d = dir_begin[p]; d < dir_begin[p + 1]; ++d)
+      local_dir[d] = to_local * world_dir[d];
+    master[p] = static_cast<int32_t>(m0);
+    body[p].mass = 0.0, body[p].velocity = Vec3::Zero(), body[p].momentum = Vec3::Zero();
+  }
+  body[m0] = rb;
+  ref[m0] = centre, ref_q[m0] = rb.orientation;
+  for (size_t p : pieces) bound_radius[p] = reach;
 }
 
 Polyhedron Blocks3::polyhedron(size_t b) const {

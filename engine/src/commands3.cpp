@@ -13,8 +13,7 @@ namespace tessera {
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
   static const std::map<std::string, Handler> h = [] {
     std::map<std::string, Handler> t = handlers();
-    for (const char* only2d :
-         {"tunnel", "voronoi", "arch", "join", "zone", "boundary", "insitu", "round"})
+    for (const char* only2d : {"tunnel", "voronoi", "arch", "zone", "boundary", "insitu", "round"})
       t[only2d] = &Interpreter::cmd_only2d;
     t["block"] = &Interpreter::cmd_block3;
     t["region"] = &Interpreter::cmd_region3;
@@ -26,6 +25,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
     t["velocity"] = &Interpreter::cmd_velocity3;
     t["gravity"] = &Interpreter::cmd_gravity3;
     t["delete"] = &Interpreter::cmd_delete3;
+    t["join"] = &Interpreter::cmd_join3;
     return t;
   }();
   return h;
@@ -114,6 +114,13 @@ void Interpreter::cut3(Args& a, std::vector<JointPlane> planes, const std::strin
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
   if (model_.blocks3.size() == 0) fail("there are no blocks to cut: make a region first");
+  // Pieces of a joined block keep their shapes in its frame: cut first, then join.
+  for (size_t b = 0; b < model_.blocks3.size(); ++b) {
+    const bool chosen = sel.empty() || std::find(sel.begin(), sel.end(), b) != sel.end();
+    if (chosen && whole_bodies3(model_.blocks3, {b}).size() > 1)
+      fail("block " + std::to_string(model_.blocks3.id[b]) +
+           " is a piece of a joined block: cut before joining");
+  }
   const int tag = joint_tag(model_, name);
   for (JointPlane& p : planes) p.tag = tag;
   const size_t before = model_.blocks3.size();
@@ -267,6 +274,18 @@ void Interpreter::cmd_velocity3(Args& a) {
 void Interpreter::cmd_gravity3(Args& a) {
   if (a.words.size() != 3) fail("write 'gravity GX GY GZ' (m/s^2), e.g. 'gravity 0 0 -9.81'");
   model_.settings.gravity3 = Vec3(num(a.words[0]), num(a.words[1]), num(a.words[2]));
+}
+
+void Interpreter::cmd_join3(Args& a) {
+  const auto sel = select(a);
+  done(a);
+  const size_t pieces = whole_bodies3(model_.blocks3, sel).size();
+  if (pieces < 2) fail("'join' needs two or more blocks");
+  join_blocks3(model_, sel);
+  const auto master = static_cast<size_t>(model_.blocks3.master[sel.front()]);
+  log("join: block " + std::to_string(model_.blocks3.id[master]) + " now moves " +
+      std::to_string(pieces) + " pieces as one body");
+  overlap_checked_ = false;
 }
 
 void Interpreter::cmd_delete3(Args& a) {

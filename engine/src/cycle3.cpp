@@ -110,6 +110,12 @@ void move_blocks3(Model& m) {
       B.force[b] = f, B.torque[b] = t, B.applied[b] = applied;
     }
   });
+  // Slave pieces hand their resultants to their masters (in block order: deterministic).
+  for (size_t b = 0; b < n; ++b)
+    if (B.is_slave(b)) {
+      const auto mb = static_cast<size_t>(B.master[b]);
+      B.force[mb] += B.force[b], B.torque[mb] += B.torque[b], B.applied[mb] += B.applied[b];
+    }
   // Adaptive global damping: as in 2D, on translation and rotation.
   if (S.damping == DampingMode::kAdaptiveGlobal && m.cycle % 10 == 0) {
     const double power = deterministic_sum(n, [&](size_t b) {
@@ -133,6 +139,7 @@ void move_blocks3(Model& m) {
     for (size_t b = b0; b < b1; ++b) {
       RigidBody3& body = B.body[b];
       const uint8_t fix = B.fixity[b];
+      if (B.is_slave(b)) continue;  // moved with its master below
       if (body.mass <= 0.0 || fix == kFix3All) {
         // Held: moves at its prescribed velocity.
         body.velocity = B.fixed_v[b];
@@ -171,6 +178,10 @@ void move_blocks3(Model& m) {
       if (!std::isfinite(jump[b])) jump[b] = 1e300;
     }
   });
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      if (B.is_slave(b)) B.update_world(b);
+  });
   size_t free_blocks = 0, worst = 0;
   double max_ub = 0.0, max_drift = 0.0;
   for (size_t b = 0; b < n; ++b) {
@@ -203,7 +214,9 @@ void detect_contacts3(Model& m) {
   size_t j = 0;
   auto& old = m.contacts3;
   for (const auto& [lo, hi] : broad_phase3(block_boxes3(B, 0.5 * tol))) {
-    if (B.fixity[lo] == kFix3All && B.fixity[hi] == kFix3All) continue;
+    const auto mlo = static_cast<size_t>(B.master[lo]), mhi = static_cast<size_t>(B.master[hi]);
+    // Pieces of one body never touch; nor do two held bodies.
+    if (mlo == mhi || (B.fixity[mlo] == kFix3All && B.fixity[mhi] == kFix3All)) continue;
     const PlaneFit fit = best_plane(B, lo, hi);
     if (fit.gap > tol) continue;
     while (j < old.size() && std::make_pair(old[j].a, old[j].b) < std::make_pair(lo, hi)) ++j;
@@ -258,10 +271,13 @@ double compute_timestep3(const Model& m) {
   for (const JointProperties& j : m.joints) kmax = std::max({kmax, j.kn, j.ks});
   const Blocks3& B = m.blocks3;
   double dt = std::numeric_limits<double>::infinity();
-  // Each block: the joint area in touch is at most its surface, at most bound_radius away.
+  // Each body: the joint area in touch is at most its surface (all its pieces'), at most
+  // bound_radius away.
+  std::vector<double> surface(B.size(), 0.0);
+  for (size_t b = 0; b < B.size(); ++b) surface[static_cast<size_t>(B.master[b])] += B.surface[b];
   for (size_t b = 0; b < B.size(); ++b) {
-    if (B.fixity[b] == kFix3All || kmax <= 0.0 || B.body[b].mass <= 0.0) continue;
-    const double k = kmax * B.surface[b];
+    if (B.fixity[b] == kFix3All || kmax <= 0.0 || B.body[b].mass <= 0.0 || B.is_slave(b)) continue;
+    const double k = kmax * surface[b];
     const double r = B.bound_radius[b];
     dt = std::min(dt, 2.0 * std::sqrt(B.body[b].mass / k));
     dt = std::min(dt, 2.0 * std::sqrt(B.body[b].principal.minCoeff() / (k * r * r)));
@@ -277,7 +293,7 @@ void prepare3(Model& m) {
   if (m.tolerance() <= 0.0)
     throw ModelError("the contact tolerance is not set (use 'tolerance T' or 'round D')");
   for (size_t b = 0; b < B.size(); ++b)
-    if (B.body[b].mass <= 0.0 && B.fixity[b] != kFix3All)
+    if (B.body[b].mass <= 0.0 && B.fixity[b] != kFix3All && !B.is_slave(b))
       throw ModelError("block " + std::to_string(B.id[b]) +
                        " has no mass: give it a material with a density");
   // Angular velocities from the momenta (a script may have set either).

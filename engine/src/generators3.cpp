@@ -92,8 +92,39 @@ void add_wall3(Model& m, const WallSpec3& w) {
   }
 }
 
-void delete_blocks3(Model& m, const std::vector<size_t>& blocks) {
+std::vector<size_t> whole_bodies3(const Blocks3& B, const std::vector<size_t>& blocks) {
+  std::vector<uint8_t> body(B.size(), 0);
+  for (size_t b : blocks) body[static_cast<size_t>(B.master[b])] = 1;
+  std::vector<size_t> out;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (body[static_cast<size_t>(B.master[b])]) out.push_back(b);
+  return out;
+}
+
+void join_blocks3(Model& m, const std::vector<size_t>& blocks) {
   Blocks3& B = m.blocks3;
+  const std::vector<size_t> pieces = whole_bodies3(B, blocks);
+  std::vector<double> densities;
+  for (size_t b : pieces) {
+    const int k = B.material[b];
+    densities.push_back(k >= 0 ? m.materials[static_cast<size_t>(k)].density : 0.0);
+    if (!(densities.back() > 0.0))
+      throw std::invalid_argument("block " + std::to_string(B.id[b]) +
+                                  " has no density: give it a material before joining");
+  }
+  B.join(pieces, densities);
+  // Contacts between pieces of the new body go; the rest are found again.
+  std::vector<Contact3> kept;
+  for (Contact3& c : m.contacts3)
+    if (B.master[c.a] != B.master[c.b]) kept.push_back(std::move(c));
+  m.contacts3 = std::move(kept);
+  m.block_contact_begin.clear();
+  m.touch();
+}
+
+void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
+  Blocks3& B = m.blocks3;
+  const std::vector<size_t> blocks = whole_bodies3(B, selected);
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t b : blocks) doomed[b] = 1;
   const std::vector<uint32_t> old_face = B.face_begin;

@@ -15,6 +15,7 @@ namespace {
 // angvel the magnitude of the angular velocity.
 double history_value3(const Model& m, HistoryQuantity q, size_t b) {
   const Blocks3& B = m.blocks3;
+  b = static_cast<size_t>(B.master[b]);  // a piece of a concave block moves with its master
   const RigidBody3& body = B.body[b];
   switch (q) {
     case HistoryQuantity::kXDisp:

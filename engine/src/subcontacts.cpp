@@ -155,8 +155,10 @@ void update_contact3(const Model& m, Contact3& c) {
   const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
   const double mna = ma.dot(n), mnb = mb.dot(n);
-  const RigidBody3& ba = B.body[a];
-  const RigidBody3& bb = B.body[b];
+  // The bodies that move the two pieces (a slave piece moves with its master).
+  const auto ma_body = static_cast<size_t>(B.master[a]), mb_body = static_cast<size_t>(B.master[b]);
+  const RigidBody3& ba = B.body[ma_body];
+  const RigidBody3& bb = B.body[mb_body];
   const double tol = m.tolerance();
   std::vector<uint8_t> used(w.old.size(), 0);
   for (size_t i = 0; i < np && std::abs(mna) > 0.05 && std::abs(mnb) > 0.05; ++i) {
@@ -206,8 +208,8 @@ void update_contact3(const Model& m, Contact3& c) {
   // The joint law at every sub-contact.
   const double dt = m.dt;
   const JointProperties& jp = m.joints[c.joint];
-  const Vec3& wa = B.omega[a];
-  const Vec3& wb = B.omega[b];
+  const Vec3& wa = B.omega[ma_body];
+  const Vec3& wb = B.omega[mb_body];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
   for (SubContact& s : c.subs) {

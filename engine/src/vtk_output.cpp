@@ -126,8 +126,11 @@ void write_blocks3(const Model& m, const std::string& path) {
   const Blocks3& B = m.blocks3;
   const size_t nf = B.local_normal.size();
   std::vector<uint32_t> owner(nf);
+  // Each face carries the motion of its block's body (a slave piece's master).
+  std::vector<uint32_t> mover(nf);
   for (uint32_t b = 0; b < B.size(); ++b)
-    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) owner[f] = b;
+    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f)
+      owner[f] = b, mover[f] = static_cast<uint32_t>(B.master[b]);
   std::ofstream out = open_file(path);
   begin_piece(out, B.world_vertex.size(), nf, "Polys", [&](size_t v) { return B.world_vertex[v]; });
   out << "<Polys>\n";
@@ -143,11 +146,10 @@ void write_blocks3(const Model& m, const std::string& path) {
   per_block("Int32", "material", [&](size_t b) { return B.material[b]; });
   per_block("Int32", "fixed", [&](size_t b) { return B.fixity[b]; });
   array(out, "Int32", "joint_tag", 1, nf, [&](size_t f) { return B.face_tag[f]; });
-  vec3_array(out, "velocity", nf, [&](size_t f) { return B.body[owner[f]].velocity; });
+  vec3_array(out, "velocity", nf, [&](size_t f) { return B.body[mover[f]].velocity; });
   vec3_array(out, "displacement", nf,
-             [&](size_t f) { return Vec3(B.body[owner[f]].position - B.ref[owner[f]]); });
-  vec3_array(out, "angular_velocity", nf,
-             [&](size_t f) { return B.body[owner[f]].angular_velocity(); });
+             [&](size_t f) { return Vec3(B.body[mover[f]].position - B.ref[mover[f]]); });
+  vec3_array(out, "angular_velocity", nf, [&](size_t f) { return B.omega[mover[f]]; });
   out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   if (!out) throw std::runtime_error(path + ": writing failed");
 }

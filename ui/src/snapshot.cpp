@@ -152,13 +152,14 @@ void copy_blocks3(const Model& m, Snapshot& s) {
   bool first = true;
   for (size_t b = 0; b < B.size(); ++b) {
     SnapshotBlock& o = s.blocks[b];
-    const RigidBody3& body = B.body[b];
+    const auto mb = static_cast<size_t>(B.master[b]);  // the body that moves this piece
+    const RigidBody3& body = B.body[mb];
     o.id = B.id[b], o.group = B.group[b], o.material = B.material[b];
     o.x = body.position.x(), o.y = body.position.y(), o.z = body.position.z();
-    o.x_ref = B.ref[b].x(), o.y_ref = B.ref[b].y(), o.z_ref = B.ref[b].z();
+    o.x_ref = B.ref[mb].x(), o.y_ref = B.ref[mb].y(), o.z_ref = B.ref[mb].z();
     o.vx = body.velocity.x(), o.vy = body.velocity.y(), o.vz = body.velocity.z();
-    o.theta = 2.0 * std::acos(std::min(1.0, std::abs(body.orientation.dot(B.ref_q[b]))));
-    o.omega = B.omega[b].norm();
+    o.theta = 2.0 * std::acos(std::min(1.0, std::abs(body.orientation.dot(B.ref_q[mb]))));
+    o.omega = B.omega[mb].norm();
     o.area = B.volume[b], o.mass = body.mass, o.fixity = B.fixity[b];
     for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
       Snapshot::Face3 face;

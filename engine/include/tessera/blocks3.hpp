@@ -6,6 +6,11 @@
 // their vertices counter-clockwise seen from outside as global vertex indices; each face keeps
 // the joint tag of the cut that made it. The distinct edge directions of a block are kept apart
 // (a box has three): the common-plane search needs only directions, not edges.
+//
+// Concave blocks (§5.3.1) are a master and convex slave pieces moving as one body: every piece
+// is a block of its own for contacts, but `master` names the block whose RigidBody3 carries the
+// whole body (common mass, centroid and inertia); a slave's shape is kept in its master's frame,
+// its forces go to its master, and contacts between pieces of one body are never made.
 #pragma once
 
 #include <cstdint>
@@ -47,6 +52,8 @@ struct Blocks3 {
   // Distinct edge directions of block b: [dir_begin[b], dir_begin[b+1]).
   std::vector<uint32_t> dir_begin{0};
   std::vector<Vec3> local_dir, world_dir;
+  // The block whose body moves this one (itself unless it is a slave piece of a concave block).
+  std::vector<int32_t> master;
   // Cold data.
   std::vector<int> group, material, id;
 
@@ -62,6 +69,11 @@ struct Blocks3 {
   void update_world(size_t b);
   // The block's surface in world coordinates (vertex indices local to the block).
   Polyhedron polyhedron(size_t b) const;
+  // Joins blocks into one body (the first is the master): combined mass, centroid and inertia
+  // from each piece's density, the pieces' shapes re-expressed in the master's principal frame,
+  // the mass-weighted velocity and no spin. Joined bodies may be joined again.
+  void join(const std::vector<size_t>& pieces, const std::vector<double>& densities);
+  bool is_slave(size_t b) const { return master[b] != static_cast<int32_t>(b); }
   // Whether a world point lies inside block b (on the surface counts).
   bool contains(size_t b, const Vec3& p) const;
 };

@@ -29,7 +29,15 @@ struct WallSpec3 {
 };
 void add_wall3(Model& m, const WallSpec3& w);
 
-// Removes blocks with their contacts; histories of them end, the rest follow the renumbering.
+// Removes blocks with their contacts (a piece of a concave block takes its whole body); histories
+// of them end, the rest follow the renumbering.
 void delete_blocks3(Model& m, const std::vector<size_t>& blocks);
+
+// Joins the bodies of the selected blocks into one concave block (master: the lowest block);
+// their contacts with each other go. Throws std::invalid_argument if a piece has no density.
+void join_blocks3(Model& m, const std::vector<size_t>& blocks);
+
+// The selection grown to whole bodies (every piece of each concave block touched).
+std::vector<size_t> whole_bodies3(const Blocks3& B, const std::vector<size_t>& blocks);
 
 }  // namespace tessera

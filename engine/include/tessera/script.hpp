@@ -177,6 +177,7 @@ class Interpreter {
   void cmd_velocity3(Args&);
   void cmd_gravity3(Args&);
   void cmd_delete3(Args&);
+  void cmd_join3(Args&);
   void cmd_only2d(Args&);
   Vec3 point3(const std::string& text) const;
   // Group and material keywords of a new block (group=, material=).
