@@ -27,10 +27,10 @@ RigidBody3 make_body(const SolidProperties& s, double density) {
 
 namespace {
 // The exact flow of the kinetic energy about principal axis k for time h: the body turns about
-// that axis at the rate pi_k / I_k; the world angular momentum does not change.
-void rotate_about(RigidBody3& b, int k, double h) {
-  const Vec3 body = b.orientation.conjugate() * b.momentum;
-  const double half = 0.5 * h * body[k] / b.principal[k];
+// that axis at the rate pi_k / I_k (pi: the angular momentum in the body frame); the world
+// angular momentum does not change, so pi turns the other way in the body frame.
+void rotate_about(RigidBody3& b, Vec3& pi, int k, double h) {
+  const double half = 0.5 * h * pi[k] / b.principal[k];
   // cos and sin of the half angle; below 1e-4 rad their series are exact in double precision.
   const double h2 = half * half;
   const double c = h2 < 1e-8 ? 1.0 - 0.5 * h2 + h2 * h2 / 24.0 : std::cos(half);
@@ -42,6 +42,11 @@ void rotate_about(RigidBody3& b, int k, double h) {
   e[k] = s;
   const Vec3 vec = q.w() * e + c * v + v.cross(e);
   b.orientation = Eigen::Quaterniond(q.w() * c - v[k] * s, vec.x(), vec.y(), vec.z());
+  // pi turned by minus the whole angle about k.
+  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  const double ct = c * c - s * s, st = 2.0 * c * s;
+  const double pi_i = ct * pi[i] + st * pi[j], pi_j = -st * pi[i] + ct * pi[j];
+  pi[i] = pi_i, pi[j] = pi_j;
 }
 }  // namespace
 
@@ -50,12 +55,22 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) 
   // orientation, then the free rotation with the new momentum (a half kick on each side of the
   // rotation would apply each torque a step late, and the lag feeds energy into rocking).
   b.momentum += dt * torque;
-  // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
-  rotate_about(b, 0, 0.5 * dt);
-  rotate_about(b, 1, 0.5 * dt);
-  rotate_about(b, 2, dt);
-  rotate_about(b, 1, 0.5 * dt);
-  rotate_about(b, 0, 0.5 * dt);
+  Vec3 pi = b.orientation.conjugate() * b.momentum;
+  const Vec3 turn = dt * pi.cwiseQuotient(b.principal);  // body-frame rotation vector
+  if (turn.cwiseAbs().maxCoeff() < 1e-8) {
+    // Below 1e-8 rad a step, the composition differs from one rotation by the rotation vector
+    // by less than round-off (its error is of the order of the angle squared).
+    const Eigen::Quaterniond q = b.orientation;
+    const Vec3 h = 0.5 * turn, v = q.w() * h + q.vec() + q.vec().cross(h);
+    b.orientation = Eigen::Quaterniond(q.w() - q.vec().dot(h), v.x(), v.y(), v.z());
+  } else {
+    // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
+    rotate_about(b, pi, 0, 0.5 * dt);
+    rotate_about(b, pi, 1, 0.5 * dt);
+    rotate_about(b, pi, 2, dt);
+    rotate_about(b, pi, 1, 0.5 * dt);
+    rotate_about(b, pi, 0, 0.5 * dt);
+  }
   b.orientation.normalize();
   if (b.mass > 0) b.velocity += dt * force / b.mass;
   b.position += dt * b.velocity;

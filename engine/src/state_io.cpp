@@ -169,7 +169,7 @@ void fields(IO& io, auto& m) {
     for (int k = 0; k < 3; ++k) io.pod(c.normal[k]);
     io.pod(c.offset), io.pod(c.gap), io.vec(c.subs);
     for (int k = 0; k < 3; ++k) io.pod(c.force[k]), io.pod(c.torque_a[k]), io.pod(c.torque_b[k]);
-    io.pod(c.force_mag);
+    io.pod(c.force_mag), io.pod(c.drift);
   }
   io.vec(m.det_pos3), io.vec(m.det_q3);
 }

@@ -97,28 +97,27 @@ struct Work {
   std::vector<PolyVertex> poly, clip, scratch;
   std::vector<uint32_t> clip_vertex;
   std::vector<SubContact> old;
+  std::vector<uint8_t> used;
 };
 thread_local Work work;
 
-}  // namespace
+// Tangent basis of a plane (t1 x t2 = n).
+std::pair<Vec3, Vec3> tangents(const Vec3& n) {
+  const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  return {t1, n.cross(t1)};
+}
 
-void update_contact3(const Model& m, Contact3& c) {
+// Builds the sub-contacts afresh: facing faces, their overlap on the plane, areas, gaps, and the
+// joint state carried over from the sub-contacts before.
+void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
-  // The plane moves with the blocks: the same candidate, re-evaluated.
-  PlaneFit fit = evaluate_plane(B, a, b, c.kind, c.ia, c.ib);
-  if (fit.gap <= -1e299) {
-    fit = best_plane(B, a, b);
-    c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
-  }
   const Vec3 n = fit.normal;
   const double lo_a = fit.lo_a, hi_b = fit.hi_b;
   c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
   c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
   c.face_b = facing_face(B, b, n, hi_b, c.face_b);
-  // Tangent basis of the plane (t1 x t2 = n).
-  const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-  const Vec3 t2 = n.cross(t1);
+  const auto [t1, t2] = tangents(n);
   const auto project = [&](const Vec3& x) { return Eigen::Vector2d(x.dot(t1), x.dot(t2)); };
   // a's face is counter-clockwise seen from below the plane: walk it backwards.
   Work& w = work;
@@ -155,12 +154,9 @@ void update_contact3(const Model& m, Contact3& c) {
   const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
   const double mna = ma.dot(n), mnb = mb.dot(n);
-  // The bodies that move the two pieces (a slave piece moves with its master).
-  const auto ma_body = static_cast<size_t>(B.master[a]), mb_body = static_cast<size_t>(B.master[b]);
-  const RigidBody3& ba = B.body[ma_body];
-  const RigidBody3& bb = B.body[mb_body];
   const double tol = m.tolerance();
-  std::vector<uint8_t> used(w.old.size(), 0);
+  std::vector<uint8_t>& used = w.used;
+  used.assign(w.old.size(), 0);
   for (size_t i = 0; i < np && std::abs(mna) > 0.05 && std::abs(mnb) > 0.05; ++i) {
     const Eigen::Vector2d& p = w.poly[i].p;
     const Eigen::Vector2d& pp = w.poly[(i + np - 1) % np].p;
@@ -205,6 +201,55 @@ void update_contact3(const Model& m, Contact3& c) {
     near_b += n.dot(B.world_vertex[v]) >= hi_b - tol;
   const int lo = std::min(near_a, near_b), hi = std::max(near_a, near_b);
   c.type = lo <= 1 ? kVertexFace : hi == 2 ? kEdgeEdge : lo == 2 ? kEdgeFace : kFaceFace;
+}
+
+// Between rebuilds: each sub-contact's point moves with block a, its gap is measured afresh
+// between the two facing faces' planes along the plane's normal.
+void follow(const Model& m, Contact3& c, const Vec3& n) {
+  const Blocks3& B = m.blocks3;
+  const auto ma = static_cast<size_t>(B.master[c.a]);
+  const RigidBody3& ba = B.body[ma];
+  const Vec3 ma_n = B.world_normal[c.face_a], mb_n = B.world_normal[c.face_b];
+  const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
+  const double mna = ma_n.dot(n), mnb = mb_n.dot(n);
+  const double dt = m.dt;
+  c.normal = n;
+  for (SubContact& s : c.subs) {
+    s.point += dt * (ba.velocity + B.omega[ma].cross(s.point - ba.position));
+    s.gap = (da - ma_n.dot(s.point)) / mna - (db - mb_n.dot(s.point)) / mnb;
+  }
+}
+}  // namespace
+
+void update_contact3(const Model& m, Contact3& c) {
+  const Blocks3& B = m.blocks3;
+  const uint32_t a = c.a, b = c.b;
+  // The plane moves with the blocks: the same candidate, re-evaluated (a face's normal is read
+  // from the block's cache; an edge pair's needs the support values).
+  PlaneFit fit;
+  const double refresh = 0.01 * m.tolerance();
+  if (c.drift < refresh && c.kind != kPlaneEdges) {
+    fit.normal = c.kind == kPlaneFaceB ? B.world_normal[c.ib] : Vec3(-B.world_normal[c.ia]);
+    follow(m, c, fit.normal);
+  } else {
+    fit = evaluate_plane(B, a, b, c.kind, c.ia, c.ib);
+    if (fit.gap <= -1e299) {
+      fit = best_plane(B, a, b);
+      c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
+    }
+    if (c.drift < refresh) {
+      follow(m, c, fit.normal);
+    } else {
+      rebuild(m, c, fit);
+      c.drift = 0.0;
+    }
+  }
+  const Vec3 n = c.normal;
+  const auto [t1, t2] = tangents(n);
+  // The bodies that move the two pieces (a slave piece moves with its master).
+  const auto ma_body = static_cast<size_t>(B.master[a]), mb_body = static_cast<size_t>(B.master[b]);
+  const RigidBody3& ba = B.body[ma_body];
+  const RigidBody3& bb = B.body[mb_body];
   // The joint law at every sub-contact.
   const double dt = m.dt;
   const JointProperties& jp = m.joints[c.joint];
@@ -236,6 +281,11 @@ void update_contact3(const Model& m, Contact3& c) {
     c.torque_b -= rb.cross(s.force);
     c.force_mag += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
   }
+  // How far any point of one block may have moved against the other this step (translation
+  // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
+  // hundredth of the tolerance.
+  c.drift += dt * ((ba.velocity - bb.velocity).norm() + wa.norm() * B.bound_radius[a] +
+                   wb.norm() * B.bound_radius[b]);
 }
 
 }  // namespace tessera

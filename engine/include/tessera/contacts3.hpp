@@ -22,6 +22,12 @@
 // nearest within the tolerance: blocks move far less in a step), so shear force survives while
 // the overlap polygon changes shape.
 //
+// Rebuilding the overlap polygon is most of a contact's cost, so it is done when the blocks have
+// moved against each other by a hundredth of the contact tolerance since the last rebuild (every
+// cycle for a sliding or rocking block, seldom in a settling wall); in between each sub-contact
+// rides on block a and its gap is measured afresh between the two faces' current planes, and the
+// plane's normal is the candidate face's current normal.
+//
 // The shear force is a vector in the CP, kept in world coordinates and turned with the plane each
 // cycle (its magnitude kept); the joint law sees it in the plane's two tangent directions.
 #pragma once
@@ -62,7 +68,10 @@ struct Contact3 {
   uint32_t face_a = 0, face_b = 0;
   uint8_t type = kFaceFace;
   Vec3 normal = Vec3::UnitZ();
-  double offset = 0.0, gap = 0.0;  // plane: normal . x = offset
+  double offset = 0.0, gap = 0.0;  // plane: normal . x = offset (at the last rebuild)
+  // Relative motion of the blocks since the sub-contacts were last rebuilt (bounded at their
+  // reach); a new contact starts due.
+  double drift = 1e300;
   std::vector<SubContact> subs;
   // Resultant on a this cycle (b takes the opposite), with the torques about each centroid, and
   // the sum of |Fn| + |Fs| over the sub-contacts.
