@@ -46,6 +46,7 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
     dst.fv_begin.push_back(static_cast<uint32_t>(dst.face_vert.size()));
     dst.local_normal.push_back(src.local_normal[f]),
         dst.world_normal.push_back(src.world_normal[f]);
+    dst.local_offset.push_back(src.local_offset[f]);
     dst.world_offset.push_back(src.world_offset[f]), dst.face_tag.push_back(src.face_tag[f]);
   }
   dst.face_begin.push_back(static_cast<uint32_t>(dst.local_normal.size()));
@@ -111,6 +112,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
     area += 0.5 * std::abs(twice.dot(normals[f]));
     fv_begin.push_back(static_cast<uint32_t>(face_vert.size()));
     local_normal.push_back(to_local * normals[f]);
+    local_offset.push_back(local_normal.back().dot(local_vertex[v0 + face[0]]));
     world_normal.push_back(normals[f]);
     world_offset.push_back(normals[f].dot(p.vertices[face[0]]));
     face_tag.push_back(f < face_tags.size() ? face_tags[f] : -1);
@@ -170,7 +172,7 @@ void Blocks3::update_world(size_t b) {
     world_vertex[v] = c + r * local_vertex[v];
   for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f) {
     world_normal[f] = r * local_normal[f];
-    world_offset[f] = world_normal[f].dot(world_vertex[face_vert[fv_begin[f]]]);
+    world_offset[f] = world_normal[f].dot(c) + local_offset[f];
   }
   for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
 }
@@ -211,8 +213,10 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
       local_vertex[v] = to_local * (world_vertex[v] - centre);
       reach = std::max(reach, local_vertex[v].norm());
     }
-    for (uint32_t f = face_begin[p]; f < face_begin[p + 1]; ++f)
+    for (uint32_t f = face_begin[p]; f < face_begin[p + 1]; ++f) {
       local_normal[f] = to_local * world_normal[f];
+      local_offset[f] = local_normal[f].dot(local_vertex[face_vert[fv_begin[f]]]);
+    }
     for (uint32_t d = dir_begin[p]; d < dir_begin[p + 1]; ++d)
       local_dir[d] = to_local * world_dir[d];
     master[p] = static_cast<int32_t>(m0);

@@ -157,7 +157,8 @@ void fields(IO& io, auto& m) {
   io.vec(B3.ref), io.vec(B3.ref_q), io.vec(B3.fixity), io.vec(B3.fixed_v), io.vec(B3.fixed_w);
   io.vec(B3.volume), io.vec(B3.surface), io.vec(B3.bound_radius), io.vec(B3.vert_begin);
   io.vec(B3.local_vertex), io.vec(B3.world_vertex), io.vec(B3.face_begin), io.vec(B3.fv_begin);
-  io.vec(B3.face_vert), io.vec(B3.local_normal), io.vec(B3.world_normal), io.vec(B3.world_offset);
+  io.vec(B3.face_vert), io.vec(B3.local_normal), io.vec(B3.local_offset), io.vec(B3.world_normal),
+      io.vec(B3.world_offset);
   io.vec(B3.face_tag), io.vec(B3.dir_begin), io.vec(B3.local_dir), io.vec(B3.world_dir);
   io.vec(B3.group), io.vec(B3.material), io.vec(B3.id), io.vec(B3.master);
   count = m.contacts3.size();

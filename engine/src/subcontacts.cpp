@@ -265,9 +265,13 @@ void update_contact3(const Model& m, Contact3& c) {
       continue;
     }
     // Last cycle's shear force turned into the plane, its magnitude kept.
-    const double fs_mag = s.fs.norm();
-    Vec3 fs = s.fs - s.fs.dot(n) * n;
-    if (fs_mag > 0.0 && fs.norm() > 0.0) fs *= fs_mag / fs.norm();
+    // (Skipped while the plane has not turned enough to matter: the usual case at rest.)
+    Vec3 fs = s.fs;
+    const double off = fs.dot(n), fs2 = fs.squaredNorm();
+    if (off * off > 1e-24 * fs2) {
+      fs -= off * n;
+      fs *= std::sqrt(fs2 / fs.squaredNorm());
+    }
     const Vec3 ra = s.point - ba.position, rb = s.point - bb.position;
     const Vec3 dv = (ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb));
     JointState st{s.fn, fs.dot(t1), s.un_prev, s.dilation, s.sd1, s.flags, fs.dot(t2), s.sd2};

@@ -47,6 +47,7 @@ struct Blocks3 {
   // face_vert[fv_begin[f] .. fv_begin[f+1]) (global vertex indices, counter-clockwise outside).
   std::vector<uint32_t> face_begin{0}, fv_begin{0}, face_vert;
   std::vector<Vec3> local_normal, world_normal;
+  std::vector<double> local_offset;  // local_normal . x on the face plane (block frame)
   std::vector<double> world_offset;  // world_normal . x on the face plane
   std::vector<int> face_tag;
   // Distinct edge directions of block b: [dir_begin[b], dir_begin[b+1]).
