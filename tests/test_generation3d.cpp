@@ -96,6 +96,27 @@ class TestGeneration3d : public QObject {
     QVERIFY(std::abs(total_volume(part.model()) - 1000.0) < 1e-9);
   }
 
+  void aFiniteJointCutsOnlyBlocksInsideItsDisc() {
+    // Ten 1 x 1 x 2 m slabs side by side; a level disc of radius 2.2 about (2.5, 0.5) at mid
+    // height holds the sections of the slabs from x = 1 to 4 (farthest corner 1.58 m away) but
+    // not those from 0 to 1 or 4 to 5 (2.55 m): three slabs are halved, the rest stay whole.
+    ScriptRun r;
+    r.run(std::string(kHead) +
+          "region 0,0,0 10,1,2 material=rock\n"
+          "jset dip=90 ddir=90 spacing=1 seed=1\n"
+          "crack dip=0 ddir=0 origin=2.5,0.5,1 radius=2.2 name=disc\n");
+    const Blocks3& B = r.model().blocks3;
+    QCOMPARE(B.size(), size_t(13));
+    size_t halves = 0;
+    for (size_t b = 0; b < B.size(); ++b)
+      if (B.volume[b] < 1.5) {
+        ++halves;
+        QVERIFY(B.body[b].position.x() > 1.0 && B.body[b].position.x() < 4.0);
+      }
+    QCOMPARE(halves, size_t(6));
+    QVERIFY(std::abs(total_volume(r.model()) - 20.0) < 1e-9);
+  }
+
   void wallHasRunningBondAndTaggedJoints() {
     ScriptRun r;
     r.run(std::string(kHead) + "wall brick=0.4,0.2,0.2 courses=4 bricks=5 material=rock\n");
