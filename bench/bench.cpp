@@ -15,18 +15,23 @@ using namespace tessera;
 
 namespace {
 
-// A running-bond wall of 2.0 x 1.0 m bricks on a fixed base (density 2600, friction 0.6,
-// kn 1e10), settling under gravity with local damping.
-Model wall_scene(int cols, int rows) {
-  Model m;
-  m.settings.rounding = 0.01;
-  m.settings.gravity = Vec2(0, -9.81);
+// Brick (density 2600) and mortar joints (kn = ks = 1e10, friction 0.6) for every contact.
+void add_brick_and_mortar(Model& m) {
   m.materials.push_back({"brick", 2600.0, {}});
   JointProperties j;
   j.name = "mortar", j.kn = 1e10, j.ks = 1e10, j.friction = std::atan(0.6) * 180 / M_PI;
   j.finalize();
   m.joints.push_back(j);
   m.joint_table.push_back({-1, -1, 0});
+}
+
+// A running-bond wall of 2.0 x 1.0 m bricks on a fixed base (density 2600, friction 0.6,
+// kn 1e10), settling under gravity with local damping.
+Model wall_scene(int cols, int rows) {
+  Model m;
+  m.settings.rounding = 0.01;
+  m.settings.gravity = Vec2(0, -9.81);
+  add_brick_and_mortar(m);
   const double width = 2.0 * cols;
   m.blocks.add({{-1, -1}, {width + 1, -1}, {width + 1, 0}, {-1, 0}}, m.settings.rounding, 2600, -1,
                0);
@@ -44,12 +49,7 @@ Model wall3d_scene(int cols, int rows) {
   m.dim = 3;
   m.settings.contact_tolerance = 0.01;
   m.settings.gravity3 = Vec3(0, 0, -9.81);
-  m.materials.push_back({"brick", 2600.0, {}});
-  JointProperties j;
-  j.name = "mortar", j.kn = 1e10, j.ks = 1e10, j.friction = std::atan(0.6) * 180 / M_PI;
-  j.finalize();
-  m.joints.push_back(j);
-  m.joint_table.push_back({-1, -1, 0});
+  add_brick_and_mortar(m);
   add_block3(m, box(Vec3(-1, -1, -1), Vec3(2.0 * cols + 1, 2, 0)), -1, 0);
   m.blocks3.fixity[0] = kFix3All;
   WallSpec3 w;

@@ -71,6 +71,13 @@ double acceleration_along(ScriptRun& r, size_t b, const Vec3& d, double t0, doub
   return tessera::test::fitted_slope(t, v);
 }
 
+// Steps a model 50 cycles at a time until its tilt reaches 0.2 rad or `limit` seconds have
+// passed; the time it got there.
+double time_to_tilt(ScriptRun& r, const std::function<double()>& tilt, double limit) {
+  while (tilt() < 0.2 && r.model().time < limit) r.run("step 50");
+  return r.model().time;
+}
+
 // The friction angle at which a wedge on planes A and B is at the limit (Hoek and Bray): the
 // weight balanced by normal reactions on both planes and a force T along their intersection;
 // sliding starts when T exceeds (N_A + N_B) tan phi.
@@ -258,11 +265,7 @@ class TestBlocks3d : public QObject {
       const auto tilt3 = [&] {
         return history_value(r3.model(), {HistoryQuantity::kRotation, 1, -1, ""});
       };
-      const auto time_to_tilt = [](ScriptRun& r, const std::function<double()>& tilt) {
-        while (tilt() < 0.2 && r.model().time < 2.0) r.run("step 50");
-        return r.model().time;
-      };
-      const double t2 = time_to_tilt(r2, tilt2), t3 = time_to_tilt(r3, tilt3);
+      const double t2 = time_to_tilt(r2, tilt2, 2.0), t3 = time_to_tilt(r3, tilt3, 2.0);
       qInfo("b/h %.2f: tilt 2D %.4f rad at %.3f s, 3D %.4f rad at %.3f s", b / h, tilt2(), t2,
             tilt3(), t3);
       if (b / h < std::tan(30 * kDeg)) {
@@ -324,11 +327,7 @@ class TestBlocks3d : public QObject {
       const auto tilt3 = [&] {
         return history_value(r3b.model(), {HistoryQuantity::kRotation, 2, -1, ""});
       };
-      const auto time_to_tilt = [](ScriptRun& r, const std::function<double()>& tilt) {
-        while (tilt() < 0.2 && r.model().time < 1.5) r.run("step 50");
-        return r.model().time;
-      };
-      const double t2 = time_to_tilt(r2, tilt2), t3 = time_to_tilt(r3b, tilt3);
+      const double t2 = time_to_tilt(r2, tilt2, 1.5), t3 = time_to_tilt(r3b, tilt3, 1.5);
       qInfo("arm to x = %.1f: tilt 2D %.4f rad at %.3f s, 3D %.4f rad at %.3f s", arm, tilt2(), t2,
             tilt3(), t3);
       if (arm > 1.0) {

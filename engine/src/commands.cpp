@@ -346,29 +346,33 @@ void Interpreter::cmd_group(Args& a) {
   model_.touch();
 }
 
-namespace {
-// Fixity bits named by the words x, y, rotation (all three when none is named).
-uint8_t fixity_words(std::vector<std::string>& words,
-                     const std::function<void(const std::string&)>& fail) {
+// Fixity bits named by the words x, y (z), rotation; all of them when none is named.
+uint8_t Interpreter::fixity_words(const std::vector<std::string>& words) const {
+  const bool three = model_.dim == 3;
+  const std::vector<std::pair<std::string, uint8_t>> names =
+      three ? std::vector<std::pair<std::string, uint8_t>>{{"x", kFix3X},
+                                                           {"y", kFix3Y},
+                                                           {"z", kFix3Z},
+                                                           {"rotation", kFix3Rot}}
+            : std::vector<std::pair<std::string, uint8_t>>{
+                  {"x", kFixX}, {"y", kFixY}, {"rotation", kFixRot}};
   uint8_t bits = 0;
   for (const auto& w : words) {
-    if (w == "x")
-      bits |= kFixX;
-    else if (w == "y")
-      bits |= kFixY;
-    else if (w == "rotation")
-      bits |= kFixRot;
-    else
-      fail("'" + w + "' is not a degree of freedom (x, y or rotation)");
+    const auto it =
+        std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == w; });
+    if (it == names.end())
+      fail("'" + w + "' is not a degree of freedom (" + (three ? "x, y, z" : "x, y") +
+           " or rotation)");
+    bits |= it->second;
   }
-  return bits ? bits : static_cast<uint8_t>(kFixAll);
+  const uint8_t all = three ? uint8_t{kFix3All} : uint8_t{kFixAll};
+  return bits ? bits : all;
 }
-}  // namespace
 
 void Interpreter::cmd_fix(Args& a) {
   const auto sel = select(a, true);
   done(a);
-  const uint8_t bits = fixity_words(a.words, [this](const std::string& s) { fail(s); });
+  const uint8_t bits = fixity_words(a.words);
   for (size_t b : sel) {
     model_.blocks.fixity[b] |= bits;
     // A degree of freedom is held at the velocity it has now unless 'velocity' says otherwise.
@@ -382,7 +386,7 @@ void Interpreter::cmd_fix(Args& a) {
 void Interpreter::cmd_free(Args& a) {
   const auto sel = select(a, true);
   done(a);
-  const uint8_t bits = fixity_words(a.words, [this](const std::string& s) { fail(s); });
+  const uint8_t bits = fixity_words(a.words);
   for (size_t b : sel) model_.blocks.fixity[b] &= static_cast<uint8_t>(~bits);
   model_.touch();
 }

@@ -213,31 +213,10 @@ void Interpreter::cmd_wall3(Args& a) {
   overlap_checked_ = false;
 }
 
-namespace {
-// Fixity bits named by the words x, y, z, rotation (all when none is named).
-uint8_t fixity_words3(const std::vector<std::string>& words,
-                      const std::function<void(const std::string&)>& fail) {
-  uint8_t bits = 0;
-  for (const auto& w : words) {
-    if (w == "x")
-      bits |= kFix3X;
-    else if (w == "y")
-      bits |= kFix3Y;
-    else if (w == "z")
-      bits |= kFix3Z;
-    else if (w == "rotation")
-      bits |= kFix3Rot;
-    else
-      fail("'" + w + "' is not a degree of freedom (x, y, z or rotation)");
-  }
-  return bits ? bits : static_cast<uint8_t>(kFix3All);
-}
-}  // namespace
-
 void Interpreter::cmd_fix3(Args& a) {
   const auto sel = select(a, true);
   done(a);
-  const uint8_t bits = fixity_words3(a.words, [this](const std::string& s) { fail(s); });
+  const uint8_t bits = fixity_words(a.words);
   Blocks3& B = model_.blocks3;
   for (size_t b : sel) {
     B.fixity[b] |= bits;
@@ -252,7 +231,7 @@ void Interpreter::cmd_fix3(Args& a) {
 void Interpreter::cmd_free3(Args& a) {
   const auto sel = select(a, true);
   done(a);
-  const uint8_t bits = fixity_words3(a.words, [this](const std::string& s) { fail(s); });
+  const uint8_t bits = fixity_words(a.words);
   for (size_t b : sel) model_.blocks3.fixity[b] &= static_cast<uint8_t>(~bits);
   model_.touch();
 }

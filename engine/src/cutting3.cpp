@@ -49,11 +49,11 @@ ExactBlock compact(const std::vector<Point>& pts, std::vector<std::vector<uint32
   return out;
 }
 
-// Cuts a convex block by a plane into the pieces on its positive and negative sides; false if
-// the plane does not pass through the inside (touching a vertex, edge or face is not a cut).
-// `inside_disc` is asked whether the section lies within the joint's extent.
-bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, int tag, const JointPlane& jp,
-             ExactBlock& pos, ExactBlock& neg) {
+// Cuts a convex block by a joint's plane into the pieces on its positive and negative sides;
+// false if the plane does not pass through the inside (touching a vertex, edge or face is not a
+// cut) or, for a disc, if the section is not wholly inside it.
+bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, const JointPlane& jp, ExactBlock& pos,
+             ExactBlock& neg) {
   const size_t nv = blk.v.size();
   std::vector<CGAL::Oriented_side> side(nv);
   bool any_pos = false, any_neg = false;
@@ -138,7 +138,7 @@ bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, int tag, const Join
     }
     if (cap.size() != edges.size()) return false;
     faces[s].push_back(std::move(cap));
-    tags[s].push_back(tag);
+    tags[s].push_back(jp.tag);
   }
   pos = compact(pts, std::move(faces[0]), std::move(tags[0]), blk.parent);
   neg = compact(pts, std::move(faces[1]), std::move(tags[1]), blk.parent);
@@ -147,7 +147,6 @@ bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, int tag, const Join
     const Point centre(jp.point.x(), jp.point.y(), jp.point.z());
     for (size_t k = 0; k < pts.size(); ++k) {
       if (!on_plane(static_cast<uint32_t>(k))) continue;
-      if (k < nv && side[k] != CGAL::ON_ORIENTED_BOUNDARY) continue;
       if (CGAL::to_double(CGAL::squared_distance(pts[k], centre)) > jp.radius * jp.radius)
         return false;
     }
@@ -194,7 +193,7 @@ std::vector<CutBlock> cut_blocks(const std::vector<CutBlock>& blocks,
         continue;
       }
       ExactBlock pos, neg;
-      if (!cut_one(blk, plane, jp.tag, jp, pos, neg) ||
+      if (!cut_one(blk, plane, jp, pos, neg) ||
           (jp.persistence < 1.0 && draw.uniform() >= jp.persistence)) {
         next.push_back(std::move(blk));
         continue;

@@ -260,11 +260,7 @@ void move_blocks(Model& m) {
       if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) k += B.inertia[b] * B.omega[b] * B.omega[b];
       return k;
     });
-    if (kin2 > 0.0) {
-      const double target = S.global_ratio * power / kin2;
-      m.global_c =
-          m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
-    }
+    servo_global_damping(m, power, kin2);
   }
   const double c_glob = S.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
   const double alpha = S.damping == DampingMode::kLocal ? S.local_alpha : 0.0;
@@ -351,6 +347,13 @@ void move_blocks(Model& m) {
 }
 
 }  // namespace
+
+void servo_global_damping(Model& m, double power, double kin2) {
+  if (!(kin2 > 0.0)) return;
+  const double target = m.settings.global_ratio * power / kin2;
+  m.global_c =
+      m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
+}
 
 const char* stage_name(int stage) {
   static const char* const names[] = {"detect", "contacts", "interfaces", "motion"};

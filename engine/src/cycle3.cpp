@@ -127,11 +127,7 @@ void move_blocks3(Model& m) {
       if (B.fixity[b] == kFix3All || B.body[b].mass <= 0.0) return 0.0;
       return 2.0 * B.body[b].kinetic_energy();
     });
-    if (kin2 > 0.0) {
-      const double target = S.global_ratio * power / kin2;
-      m.global_c =
-          m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
-    }
+    servo_global_damping(m, power, kin2);
   }
   const double c_glob = S.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
   const double alpha = S.damping == DampingMode::kLocal ? S.local_alpha : 0.0;

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "tessera/blocks.hpp"
+#include "tessera/blocks3.hpp"
 #include "tessera/contacts.hpp"
 
 namespace tessera::ui {
@@ -92,7 +93,9 @@ void ModelTree::update(const Snapshot& s) {
   auto* groups = top("Groups", s.groups.size());
   for (size_t g = 0; g < s.groups.size(); ++g) {
     const QString name = QString::fromStdString(s.groups[g]);
-    Properties p{{"blocks", std::to_string(per_group[g])}, {"area", num(area[g], "m²")}};
+    Properties p{{"blocks", std::to_string(per_group[g])},
+                 s.three ? std::pair<std::string, std::string>{"volume", num(area[g], "m³")}
+                         : std::pair<std::string, std::string>{"area", num(area[g], "m²")}};
     add(blocks, name, QString::number(per_group[g]) + " blocks", p);
     add(groups, name, "", p);
   }
@@ -125,6 +128,25 @@ Properties block_properties(const Snapshot& s, int block) {
                             ? s.materials[static_cast<size_t>(b.material)].name
                             : std::string("-");
   std::string fixed;
+  if (s.three) {
+    // 3D: the body's motion (a piece of a joined block shows its whole body's).
+    if (b.fixity & kFix3X) fixed += "x ";
+    if (b.fixity & kFix3Y) fixed += "y ";
+    if (b.fixity & kFix3Z) fixed += "z ";
+    if (b.fixity & kFix3Rot) fixed += "rotation";
+    return {{"id", std::to_string(b.id)},
+            {"group", group},
+            {"material", material},
+            {"centroid", num(b.x, "") + ", " + num(b.y, "") + ", " + num(b.z, "m")},
+            {"displacement", num(b.x - b.x_ref, "") + ", " + num(b.y - b.y_ref, "") + ", " +
+                                 num(b.z - b.z_ref, "m")},
+            {"velocity", num(b.vx, "") + ", " + num(b.vy, "") + ", " + num(b.vz, "m/s")},
+            {"turned", num(b.theta * 180 / std::numbers::pi, "°")},
+            {"angular velocity", num(b.omega, "rad/s")},
+            {"volume", num(b.area, "m³")},
+            {"mass", num(b.mass, "kg")},
+            {"fixed", fixed.empty() ? "free" : fixed}};
+  }
   if (b.fixity & kFixX) fixed += "x ";
   if (b.fixity & kFixY) fixed += "y ";
   if (b.fixity & kFixRot) fixed += "rotation";

@@ -180,6 +180,8 @@ class Interpreter {
   void cmd_join3(Args&);
   void cmd_only2d(Args&);
   Vec3 point3(const std::string& text) const;
+  // Fixity bits named by the words of 'fix' and 'free' (all when none is named).
+  uint8_t fixity_words(const std::vector<std::string>& words) const;
   // Group and material keywords of a new block (group=, material=).
   std::pair<int, int> group_material(Args& a);
   // Cuts the selection (all when none is given) by planes named `name`.

@@ -24,7 +24,7 @@ struct SnapshotBlock {
   double x = 0, y = 0, x_ref = 0, y_ref = 0, theta = 0;
   double vx = 0, vy = 0, omega = 0;
   double z = 0, z_ref = 0, vz = 0;  // 3D models (theta: the angle turned, omega: its rate)
-  double area = 0, mass = 0;
+  double area = 0, mass = 0;        // 3D models: volume (m³) and mass (kg)
   uint8_t fixity = 0;
   bool deformable = false;  // then local holds outline node positions, start their originals
   uint32_t vert_begin = 0, vert_end = 0;  // into Snapshot::local
