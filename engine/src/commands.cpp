@@ -387,7 +387,8 @@ void Interpreter::cmd_free(Args& a) {
   const auto sel = select(a, true);
   done(a);
   const uint8_t bits = fixity_words(a.words);
-  for (size_t b : sel) model_.blocks.fixity[b] &= static_cast<uint8_t>(~bits);
+  auto& fixity = model_.dim == 3 ? model_.blocks3.fixity : model_.blocks.fixity;
+  for (size_t b : sel) fixity[b] &= static_cast<uint8_t>(~bits);
   model_.touch();
 }
 

@@ -21,7 +21,6 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
     t["jset"] = &Interpreter::cmd_jset3;
     t["wall"] = &Interpreter::cmd_wall3;
     t["fix"] = &Interpreter::cmd_fix3;
-    t["free"] = &Interpreter::cmd_free3;
     t["velocity"] = &Interpreter::cmd_velocity3;
     t["gravity"] = &Interpreter::cmd_gravity3;
     t["delete"] = &Interpreter::cmd_delete3;
@@ -225,14 +224,6 @@ void Interpreter::cmd_fix3(Args& a) {
       if (bits & (1 << k)) B.fixed_v[b][k] = B.body[b].velocity[k];
     if (bits & kFix3Rot) B.fixed_w[b] = Vec3::Zero();
   }
-  model_.touch();
-}
-
-void Interpreter::cmd_free3(Args& a) {
-  const auto sel = select(a, true);
-  done(a);
-  const uint8_t bits = fixity_words(a.words);
-  for (size_t b : sel) model_.blocks3.fixity[b] &= static_cast<uint8_t>(~bits);
   model_.touch();
 }
 

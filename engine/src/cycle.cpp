@@ -340,13 +340,17 @@ void move_blocks(Model& m) {
   }
   if (max_drift > 0.5 * tol) m.detection_due = true;
   if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(jump[worst] < 0.1))
-    throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
-                     std::to_string(B.id[worst]) +
-                     " moved more than a tenth of its size in one step (time step too large for "
-                     "the joint stiffness, or blocks overlapping badly)");
+    throw_diverged(m, B.id[worst]);
 }
 
 }  // namespace
+
+void throw_diverged(const Model& m, int block_id) {
+  throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
+                   std::to_string(block_id) +
+                   " moved more than a tenth of its size in one step (time step too large for "
+                   "the joint stiffness, or blocks overlapping badly)");
+}
 
 void servo_global_damping(Model& m, double power, double kin2) {
   if (!(kin2 > 0.0)) return;

@@ -195,10 +195,7 @@ void move_blocks3(Model& m) {
   m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
   if (max_drift > 0.5 * m.tolerance()) m.detection_due = true;
   if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(jump[worst] < 0.1))
-    throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
-                     std::to_string(B.id[worst]) +
-                     " moved more than a tenth of its size in one step (time step too large for "
-                     "the joint stiffness, or blocks overlapping badly)");
+    throw_diverged(m, B.id[worst]);
 }
 
 }  // namespace

@@ -173,7 +173,6 @@ class Interpreter {
   void cmd_jset3(Args&);
   void cmd_wall3(Args&);
   void cmd_fix3(Args&);
-  void cmd_free3(Args&);
   void cmd_velocity3(Args&);
   void cmd_gravity3(Args&);
   void cmd_delete3(Args&);

@@ -51,6 +51,8 @@ std::string find_overlap(const Model& m);
 // Cross-reference checks; throws std::logic_error naming what is inconsistent.
 void validate(const Model& m);
 double kinetic_energy(const Model& m);
+// Throws the ModelError of a run whose block moved more than a tenth of its size in a step.
+[[noreturn]] void throw_diverged(const Model& m, int block_id);
 // Adaptive global damping (Cundall 1982): the viscosity that absorbs the chosen share of the
 // power of the unbalanced forces, from that power and twice the kinetic energy, changed by at
 // most a factor 1.25 each time (2D and 3D cycles, every 10 cycles).
