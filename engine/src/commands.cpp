@@ -1,5 +1,6 @@
 // Script commands that build a model: geometry, groups, properties, conditions, settings.
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <sstream>
 
@@ -314,25 +315,30 @@ void Interpreter::cmd_wall(Args& a) {
   const Vec2 brick = point(v);
   w.brick_length = brick.x(), w.brick_height = brick.y();
   if (w.brick_length <= 0.0 || w.brick_height <= 0.0) fail("brick sizes must be positive");
+  const WallLayout l = wall_layout(a);
+  w.courses = l.courses, w.bricks = l.bricks, w.group = l.group, w.material = l.material;
+  w.bed_tag = l.bed_tag, w.head_tag = l.head_tag;
+  add_running_bond_wall(model_, w);
+  overlap_checked_ = false;
+}
+
+Interpreter::WallLayout Interpreter::wall_layout(Args& a) {
+  WallLayout l;
+  std::string v;
   if (!take(a, "courses", v)) missing(a, "courses", "'wall'");
-  w.courses = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
+  l.courses = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
   if (!take(a, "bricks", v)) missing(a, "bricks", "'wall' (bricks per course)");
-  w.bricks = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
-  if (static_cast<double>(w.courses) * w.bricks > 1e6)
+  l.bricks = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
+  if (static_cast<double>(l.courses) * l.bricks > 1e6)
     fail("a wall of more than a million bricks is not supported");
-  if (take(a, "group", v)) w.group = model_.group_index(v, true);
-  if (take(a, "material", v)) {
-    w.material = model_.material_index(v);
-    if (w.material < 0) fail("there is no material '" + v + "' (define it first)");
-  }
+  std::tie(l.group, l.material) = group_material(a);
   // Bed and head joints are named for assigning mortar properties: NAME_bed, NAME_head.
   std::string name = "wall";
   take(a, "name", name);
   done(a);
-  w.bed_tag = joint_tag(model_, name + "_bed");
-  w.head_tag = joint_tag(model_, name + "_head");
-  add_running_bond_wall(model_, w);
-  overlap_checked_ = false;
+  l.bed_tag = joint_tag(model_, name + "_bed");
+  l.head_tag = joint_tag(model_, name + "_head");
+  return l;
 }
 
 void Interpreter::cmd_group(Args& a) {

@@ -1,6 +1,7 @@
 // Script commands of 3D models: the dimension, blocks, joint planes, walls and conditions.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "tessera/expr.hpp"
 #include "tessera/generators.hpp"
@@ -196,18 +197,9 @@ void Interpreter::cmd_wall3(Args& a) {
   const Vec3 brick = point3(v);
   w.length = brick.x(), w.height = brick.y(), w.width = brick.z();
   if (!(brick.minCoeff() > 0.0)) fail("brick sizes must be positive");
-  if (!take(a, "courses", v)) missing(a, "courses", "'wall'");
-  w.courses = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
-  if (!take(a, "bricks", v)) missing(a, "bricks", "'wall' (bricks per course)");
-  w.bricks = static_cast<int>(std::min<int64_t>(integer(v, 1), 1 << 30));
-  if (static_cast<double>(w.courses) * w.bricks > 1e6)
-    fail("a wall of more than a million bricks is not supported");
-  std::tie(w.group, w.material) = group_material(a);
-  std::string name = "wall";
-  take(a, "name", name);
-  done(a);
-  w.bed_tag = joint_tag(model_, name + "_bed");
-  w.head_tag = joint_tag(model_, name + "_head");
+  const WallLayout l = wall_layout(a);
+  w.courses = l.courses, w.bricks = l.bricks, w.group = l.group, w.material = l.material;
+  w.bed_tag = l.bed_tag, w.head_tag = l.head_tag;
   add_wall3(model_, w);
   overlap_checked_ = false;
 }

@@ -181,6 +181,12 @@ class Interpreter {
   Vec3 point3(const std::string& text) const;
   // Fixity bits named by the words of 'fix' and 'free' (all when none is named).
   uint8_t fixity_words(const std::vector<std::string>& words) const;
+  // The keywords both walls share (courses=, bricks=, group=, material=, name=, made into the
+  // bed and head joint tags); finishes the keywords.
+  struct WallLayout {
+    int courses = 0, bricks = 0, group = -1, material = -1, bed_tag = -1, head_tag = -1;
+  };
+  WallLayout wall_layout(Args& a);
   // Group and material keywords of a new block (group=, material=).
   std::pair<int, int> group_material(Args& a);
   // Cuts the selection (all when none is given) by planes named `name`.
