@@ -1,16 +1,44 @@
 // Batch mode: runs a script headless, prints progress, writes results even after an error.
 #include "batch.hpp"
 
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
 #include "tessera/parallel.hpp"
 #include "tessera/script.hpp"
+#include "tessera/state_io.hpp"
 #include "tessera/ui/figure_writer.hpp"
 
 namespace fs = std::filesystem;
 
 namespace tessera::app {
+
+namespace {
+// The first SIGINT or SIGTERM asks the run to stop at the next cycle boundary (it then writes
+// its results and a state file); a second one ends the process at once.
+std::atomic<bool> g_stop{false};
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_signal(int sig) {
+  if (g_signal != 0) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    return;
+  }
+  g_signal = sig;
+  g_stop.store(true);
+}
+
+void install_signal_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+}  // namespace
 
 int run_batch(const std::string& script, std::string out_dir, int threads, bool quiet) {
   if (out_dir.empty()) {
@@ -23,6 +51,8 @@ int run_batch(const std::string& script, std::string out_dir, int threads, bool 
   });
   // Figures are drawn with QPainter, so a headless machine writes them too.
   interp.set_figure_sink(ui::figure_sink());
+  install_signal_handlers();
+  interp.set_stop_flag(&g_stop);
   int status = 0;
   try {
     interp.run_file(script);
@@ -36,6 +66,20 @@ int run_batch(const std::string& script, std::string out_dir, int threads, bool 
   } catch (const std::exception& e) {
     std::cerr << "tessera: " << e.what() << std::endl;
     return 1;
+  }
+  if (const int sig = g_signal; sig != 0) {
+    // Interrupted: the model as it stands, for 'restore', beside the results.
+    const std::string state = (fs::path(out_dir) / "interrupted.state").string();
+    try {
+      save_state(interp.model(), state);
+    } catch (const std::exception& e) {
+      std::cerr << "tessera: " << e.what() << std::endl;
+    }
+    std::cerr << script << ": interrupted by " << (sig == SIGINT ? "SIGINT" : "SIGTERM")
+              << " at cycle " << interp.model().cycle << "; results in " << out_dir
+              << ", the model in " << state << " (continue with 'restore " << state << "')"
+              << std::endl;
+    return 128 + sig;
   }
   if (!quiet) std::cout << "results in " << out_dir << std::endl;
   return status;

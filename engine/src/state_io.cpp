@@ -3,6 +3,7 @@
 #include "tessera/state_io.hpp"
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <type_traits>
@@ -47,9 +48,13 @@ class Writer {
 
 class Reader {
  public:
-  Reader(std::istream& in, const std::string& path) : in_(in), path_(path) {}
+  // `left`: the bytes of the file after the magic word, so that no count read from it can ask for
+  // more memory than the file could fill.
+  Reader(std::istream& in, const std::string& path, uint64_t left)
+      : in_(in), path_(path), left_(left) {}
   template <class T>
   void pod(T& v) {
+    take(sizeof v);
     in_.read(reinterpret_cast<char*>(&v), sizeof v);
     check();
   }
@@ -57,7 +62,9 @@ class Reader {
   void vec(std::vector<T>& v) {
     uint64_t n = 0;
     pod(n);
-    if (n > (1ULL << 34)) fail("a length is implausible");
+    if (n > left_ / sizeof(T))
+      fail("a list of " + std::to_string(n) + " items is longer than the rest of the file");
+    if constexpr (!std::is_same_v<T, Vec2>) take(n * sizeof(T));
     v.resize(n);
     if constexpr (std::is_same_v<T, Vec2>) {
       for (Vec2& p : v) pod(p.x()), pod(p.y());
@@ -69,7 +76,8 @@ class Reader {
   void str(std::string& s) {
     uint64_t n = 0;
     pod(n);
-    if (n > (1ULL << 24)) fail("a name is implausibly long");
+    if (n > (1ULL << 24) || n > left_) fail("a name is implausibly long");
+    take(n);
     s.resize(n);
     in_.read(s.data(), static_cast<std::streamsize>(n));
     check();
@@ -82,8 +90,13 @@ class Reader {
   void check() {
     if (!in_) fail("it ends early");
   }
+  void take(uint64_t bytes) {
+    if (bytes > left_) fail("it ends early");
+    left_ -= bytes;
+  }
   std::istream& in_;
   std::string path_;
+  uint64_t left_;
 };
 
 // One field list for both directions, so save and restore cannot drift apart.
@@ -193,14 +206,21 @@ Model restore_state(const std::string& path) {
   if (!in) throw std::runtime_error(path + ": cannot open for reading");
   char magic[sizeof kMagic] = {};
   in.read(magic, sizeof magic);
-  Reader r(in, path);
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  Reader r(in, path, ec || size < sizeof magic ? 0 : size - sizeof magic);
   if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) r.fail("wrong magic word");
   uint32_t version = 0;
   r.pod(version);
   if (version != kVersion) r.fail("version " + std::to_string(version) + " is not supported");
   Model m;
   fields(r, m);
-  for (auto& j : m.joints) j.finalize();
+  // Every index and count checked once, before anything follows them.
+  if (const std::string why = state_problem(m); !why.empty()) r.fail(why);
+  for (auto& j : m.joints) {
+    if (!find_joint_law(j.law)) r.fail("joint properties '" + j.name + "' name no known law");
+    j.finalize();
+  }
   for (auto& mat : m.materials)
     if (!mat.zone.model.empty()) mat.zone.finalize();
   sync_zone_materials(m);
