@@ -19,13 +19,15 @@ std::string ScriptRun::path(const std::string& name) const {
   return dir.path().toStdString() + "/" + name;
 }
 
-std::string incline_script(double psi, double phi, double b, double h) {
+std::string incline_script(double psi, double phi, double b, double h, double kn) {
   return "set psi = " + std::to_string(psi) + "\nset phi = " + std::to_string(phi) +
          "\nset b = " + std::to_string(b) + "\nset h = " + std::to_string(h) +
          "\nset c = cos(psi)\nset s = sin(psi)\n"
          "round 0.005\n"
          "material define rock density=2500\n"
-         "joint define j kn=1e10 ks=1e10 friction=phi\n"
+         "joint define j kn=" +
+         std::to_string(kn) + " ks=" + std::to_string(kn) +
+         " friction=phi\n"
          "joint assign j\n"
          "block (-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s) group=base material=rock\n"
          "block 0,0 b*c,b*s (b*c-h*s),(b*s+h*c) (-h*s),h*c material=rock\n"

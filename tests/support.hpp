@@ -22,8 +22,10 @@ struct ScriptRun {
 };
 
 // A b x h block resting on a fixed slab, both turned by psi degrees (the geometry, not gravity,
-// is inclined); friction phi degrees; block 2 is the free block, its vertex 0 the downslope toe.
-std::string incline_script(double psi, double phi, double b = 1.0, double h = 1.0);
+// is inclined); friction phi degrees, joint stiffnesses kn = ks; block 2 is the free block, its
+// vertex 0 the downslope toe.
+std::string incline_script(double psi, double phi, double b = 1.0, double h = 1.0,
+                           double kn = 1e10);
 
 // FNV-1a hash of the dynamic state (positions, velocities, contact stresses), bit for bit.
 uint64_t state_hash(const Model& m);

@@ -282,10 +282,36 @@ class TestBlocks3d : public QObject {
         QVERIFY(std::abs(t3 - t2) < 0.05 * t2);
         QVERIFY(std::abs(t3 - t) < 0.05 * t);
       } else {
-        QVERIFY(tilt2() < 1e-3);
-        QVERIFY(tilt3() < 1e-3);
+        // Standing, undamped: the sudden load sets the squat block rocking on its two base
+        // contacts by a few milliradians (it grows slowly: see the notes of issue 13), far
+        // from the toppling block's 0.2 rad.
+        QVERIFY(tilt2() < 1e-2);
+        QVERIFY(tilt3() < 1e-2);
       }
     }
+  }
+
+  // 'timestep fixed DT' sets the step of 2D and 3D models alike (3D once ignored it).
+  void fixedTimestepIsUsedIn2dAnd3d() {
+    const std::string law =
+        "material define rock density=2500\njoint define j kn=1e10 ks=1e10 friction=30\n"
+        "joint assign j\n";
+    ScriptRun r3;
+    r3.run(
+        "dimension 3\ntolerance 0.01\ngravity 0 0 -9.81\n" + law +
+        "block box 0,0,-1 1,1,0 material=rock\nfix block=1\nblock box 0,0,0 1,1,1 material=rock\n"
+        "timestep fixed 1e-6\nstep 10");
+    QCOMPARE(r3.model().dt, 1e-6);
+    QVERIFY(std::abs(r3.model().time - 1e-5) < 1e-18);
+    ScriptRun r2;
+    r2.run(
+        "round 0.01\ngravity 0 -9.81\n" + law +
+        "block 0,-1 1,-1 1,0 0,0 material=rock\nfix block=1\nblock 0,0 1,0 1,1 0,1 material=rock\n"
+        "timestep fixed 1e-6\nstep 10");
+    QCOMPARE(r2.model().dt, 1e-6);
+    // Back to automatic: the stable step of these stiffnesses is far larger.
+    r3.run("timestep auto\nstep 1");
+    QVERIFY(r3.model().dt > 1e-5);
   }
 
   void joinedBlocksMoveAsOneConcaveBody() {
@@ -340,8 +366,11 @@ class TestBlocks3d : public QObject {
                      (J.local_vertex[J.vert_begin[1]] - J.local_vertex[J.vert_begin[2]]).norm()) <
             1e-9);
       } else {
-        QVERIFY(tilt2() < 1e-3);
-        QVERIFY(tilt3() < 1e-3);
+        // Standing, undamped: the sudden load sets the squat block rocking on its two base
+        // contacts by a few milliradians (it grows slowly: see the notes of issue 13), far
+        // from the toppling block's 0.2 rad.
+        QVERIFY(tilt2() < 1e-2);
+        QVERIFY(tilt3() < 1e-2);
       }
     }
   }

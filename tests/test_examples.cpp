@@ -215,8 +215,12 @@ class TestExamples : public QObject {
     // Before excavation the model came to rest (the solve's ratio limit was reached) ...
     const auto& ratio = h["ratio"];
     QVERIFY(*std::min_element(ratio.begin(), ratio.end()) <= 1e-5);
-    // ... and the crown block history was written through both stages.
+    // ... and the crown block history was written through both stages. Under gravity alone the
+    // crown only settles: it rose 7.9 mm when the flat corners of the opening's pieces met
+    // their neighbours' faces with their arcs' full circles (0.1 m overlaps of blocks that
+    // merely touch).
     QVERIFY(h["crown"].size() > 100);
+    QVERIFY(*std::max_element(h["crown"].begin(), h["crown"].end()) < 1e-3);
     QVERIFY(QFile::exists(r.dir + "/before.sav"));
     QVERIFY(read_summary(r.dir)["blocks"].toInt() > 100);
     check_figure(r.dir + "/tunnel_displacement.png", QSize(1600, 1200));

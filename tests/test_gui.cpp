@@ -2,7 +2,6 @@
 // of the rendered view, figure export, and a bad command leaving the model as it was.
 #include <QApplication>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QLineEdit>
@@ -13,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <thread>
 
 #include "tessera/script.hpp"
 #include "tessera/ui/colour_map.hpp"
@@ -125,27 +125,25 @@ class TestGui : public QObject {
     QVERIFY(open_shown(w, script_));
     QVERIFY(w.snapshot());
     QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
-    // A timer on the UI thread: its ticks must keep coming while the solver runs.
-    std::vector<qint64> ticks;
-    QElapsedTimer clock;
-    clock.start();
+    // The UI thread keeps handling events while the solver cycles: a timer on it sees the
+    // snapshot's cycle count grow from tick to tick (a blocked loop would see one value), and
+    // the snapshots are made on another thread. No clock is read: a busy machine only slows it.
+    std::vector<uint64_t> seen_cycles;
     QTimer timer;
-    connect(&timer, &QTimer::timeout, [&] { ticks.push_back(clock.elapsed()); });
+    connect(&timer, &QTimer::timeout, [&] {
+      const uint64_t c = w.snapshot()->cycle;
+      if (seen_cycles.empty() || c > seen_cycles.back()) seen_cycles.push_back(c);
+    });
     timer.start(10);
     w.step(100000000);
     QVERIFY(w.busy());
-    QTest::qWait(1000);
+    QTRY_VERIFY_WITH_TIMEOUT(seen_cycles.size() >= 4, 120000);
     timer.stop();
+    QVERIFY(w.busy());
+    QVERIFY(w.snapshot()->made_on != std::this_thread::get_id());
     const uint64_t seen = w.snapshot()->cycle;
     w.stopRun();
     QVERIFY(wait_finished(w));
-    // Frames arrived during the run, and no gap between ticks came near the run's length (a
-    // blocked loop shows one gap of the whole run). Under Xvfb with software OpenGL a frame
-    // takes ~30 ms of the loop, several times that under the sanitizers.
-    qint64 gap = ticks.empty() ? 1000 : ticks.front();
-    for (size_t i = 1; i < ticks.size(); ++i) gap = std::max(gap, ticks[i] - ticks[i - 1]);
-    QVERIFY2(ticks.size() >= 3 && gap < 400,
-             qPrintable(QString("%1 ticks, longest gap %2 ms").arg(ticks.size()).arg(gap)));
     QVERIFY(seen > 0);
     const uint64_t stopped_at = w.snapshot()->cycle;
     QVERIFY(stopped_at > 0 && stopped_at < 100000000);
@@ -164,15 +162,16 @@ class TestGui : public QObject {
     w.openScript(script_);
     QVERIFY(wait_finished(w));
     w.step(100000000);
-    QTest::qWait(200);
+    QTRY_VERIFY_WITH_TIMEOUT(w.snapshot()->cycle > 0, 60000);
+    // Paused, the solver publishes the cycle it holds at and waits: nothing moves after it.
     w.setPaused(true);
-    QTest::qWait(500);
+    QTRY_VERIFY_WITH_TIMEOUT(w.snapshot()->held, 60000);
     const uint64_t a = w.snapshot()->cycle;
     QTest::qWait(300);
     QCOMPARE(w.snapshot()->cycle, a);
+    QVERIFY(w.snapshot()->held && w.busy());
     w.setPaused(false);
-    QTest::qWait(300);
-    QVERIFY(w.snapshot()->cycle > a);
+    QTRY_VERIFY_WITH_TIMEOUT(w.snapshot()->cycle > a, 60000);
     w.stopRun();
     QVERIFY(wait_finished(w));
   }

@@ -58,6 +58,34 @@ class TestIncline : public QObject {
     QVERIFY(std::abs(along() - start) < 1e-6);
     QVERIFY(std::hypot(m.blocks.vx[1], m.blocks.vy[1]) < 1e-4);
   }
+  // A cohesive joint with no tensile strength keeps its bond from the first cycle (a block set
+  // exactly on another has a round-off gap, which is not tension), and its cohesion holds the
+  // block until W sin(psi) = c L. Friction zero: the two base contacts then share the shear
+  // equally and fail together, whatever the normal forces; L = 1 - 2d (springs at arc centres).
+  // The slope is raised in steps of 0.25 degrees, settled at each (a sudden load would overshoot
+  // the static shear), and the block must start to slide within a step of the limit.
+  void cohesionWithoutTensileStrengthHoldsUntilItsLimit() {
+    const double c = 1e4, d = 0.005, W = 2500 * 9.81;
+    const double limit = std::asin(c * (1 - 2 * d) / W) / kDeg;
+    ScriptRun r;
+    r.run(
+        "round 0.005\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=0 cohesion=1e4 tension=0\njoint assign j\n"
+        "block -2,-1 3,-1 3,0 -2,0 material=rock\nfix block=1\n"
+        "block 0,0 1,0 1,1 0,1 material=rock\ngravity 0 -9.81\nstep 1\n");
+    Model& m = r.model();
+    int bonded = 0;
+    for (size_t i = 0; i < m.contacts.size(); ++i) bonded += (m.contacts.flags[i] & kBonded) != 0;
+    QCOMPARE(bonded, 2);
+    double slid_at = 0.0;
+    for (double psi = 5.0; psi < 40.0 && slid_at == 0.0; psi += 0.25) {
+      r.run("gravity " + std::to_string(9.81 * std::sin(psi * kDeg)) + " " +
+            std::to_string(-9.81 * std::cos(psi * kDeg)) + "\nsolve ratio=1e-5 cycles=5000");
+      if (m.blocks.x[1] - 0.5 > 1e-3) slid_at = psi;
+    }
+    qInfo("slid at psi %.2f degrees; W sin(psi) = c L at %.2f", slid_at, limit);
+    QVERIFY(slid_at > limit - 0.25 && slid_at < limit + 0.5);
+  }
 };
 
 QTEST_APPLESS_MAIN(TestIncline)

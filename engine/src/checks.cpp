@@ -12,9 +12,14 @@ namespace tessera {
 
 std::string Finding::text() const {
   if (block == 0) return std::string(error ? "error: " : "warning: ") + message;
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%s: block %d at (%.6g, %.6g): ", error ? "error" : "warning",
-                block, where.x(), where.y());
+  char buf[128];
+  if (three)
+    std::snprintf(buf, sizeof buf,
+                  "%s: block %d at (%.6g, %.6g, %.6g): ", error ? "error" : "warning", block,
+                  where.x(), where.y(), where.z());
+  else
+    std::snprintf(buf, sizeof buf, "%s: block %d at (%.6g, %.6g): ", error ? "error" : "warning",
+                  block, where.x(), where.y());
   return buf + message;
 }
 
@@ -34,14 +39,14 @@ std::vector<Finding> check_geometry3(const Model& m, const CheckLimits& lim) {
     if (B.volume[b] < min_volume) {
       std::snprintf(buf, sizeof buf, "volume %.3g is below the limit %.3g", B.volume[b],
                     min_volume);
-      out.push_back({true, B.id[b], Vec2(c.x(), c.y()), buf});
+      out.push_back({true, B.id[b], c, buf, true});
     } else if (thickness < min_thick) {
       std::snprintf(buf, sizeof buf, "thickness %.3g (3 volume / surface) is below the limit %.3g",
                     thickness, min_thick);
-      out.push_back({false, B.id[b], Vec2(c.x(), c.y()), buf});
+      out.push_back({false, B.id[b], c, buf, true});
     }
   }
-  if (const std::string o = find_overlap3(m); !o.empty()) out.push_back({true, 0, Vec2::Zero(), o});
+  if (const std::string o = find_overlap3(m); !o.empty()) out.push_back({true, 0, {}, o, true});
   return out;
 }
 }  // namespace
@@ -54,7 +59,7 @@ std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
   const double min_thick = lim.min_thickness > 0.0 ? lim.min_thickness : d;
   std::vector<Finding> out;
   auto report = [&](bool error, size_t b, const std::string& msg) {
-    out.push_back({error, B.id[b], Vec2(B.x[b], B.y[b]), msg});
+    out.push_back({error, B.id[b], Vec3(B.x[b], B.y[b], 0.0), msg});
   };
   char buf[160];
   for (size_t b = 0; b < B.size(); ++b) {
@@ -88,16 +93,37 @@ std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
       }
     }
   }
-  if (const std::string o = find_overlap(m); !o.empty()) out.push_back({true, 0, Vec2::Zero(), o});
+  if (const std::string o = find_overlap(m); !o.empty()) out.push_back({true, 0, {}, o});
+  if (B.size() == 0 || m.joints.empty()) return out;
+  // The contacts the first cycle starts from (no bonding side effects; the probe is thrown away).
+  Model probe = m;
+  probe.cycle = 1;
+  try {
+    detect_contacts(probe);
+  } catch (const ModelError&) {
+    return out;  // missing joint properties: the run itself will say so
+  }
+  // Overlap as the contacts see it: a corner deeper than the tolerance in another block starts
+  // the run with a force of kn L times its depth, whatever the outlines say. The outline test
+  // above and the contact geometry must agree; the deepest such contact is named.
+  const Contacts& C = probe.contacts;
+  const double tol = m.tolerance();
+  size_t deepest = C.size();
+  for (size_t i = 0; i < C.size(); ++i)
+    if (C.kind[i] != kLost && C.gap[i] < -tol && (deepest == C.size() || C.gap[i] < C.gap[deepest]))
+      deepest = i;
+  if (deepest < C.size()) {
+    const uint32_t a = C.a[deepest], b = C.b[deepest];
+    char msg[320];
+    std::snprintf(msg, sizeof msg,
+                  "blocks %d and %d overlap by %.3g m at (%.6g, %.6g): corner %u of block %d is "
+                  "that deep in block %d, more than the contact tolerance %.3g",
+                  B.id[a], B.id[b], -C.gap[deepest], C.point[deepest].x(), C.point[deepest].y(),
+                  C.corner[deepest] - B.vert_begin[a] + 1, B.id[a], B.id[b], tol);
+    out.push_back({true, 0, {}, msg});
+  }
   // Blocks that no chain of contacts joins to a fixed block fall under gravity.
-  if (m.settings.gravity.norm() > 0.0 && B.size() > 0 && !m.joints.empty()) {
-    Model probe = m;
-    probe.cycle = 1;  // no bonding side effects; the probe is thrown away
-    try {
-      detect_contacts(probe);
-    } catch (const ModelError&) {
-      return out;  // missing joint properties: the run itself will say so
-    }
+  if (m.settings.gravity.norm() > 0.0) {
     std::vector<size_t> root(B.size());
     std::iota(root.begin(), root.end(), 0);
     auto find = [&](size_t x) {

@@ -1,8 +1,8 @@
 // Script commands that build a model: geometry, groups, properties, conditions, settings.
 #include <algorithm>
-#include <tuple>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 #include "tessera/deformable.hpp"
 #include "tessera/expr.hpp"
@@ -404,11 +404,15 @@ void Interpreter::cmd_velocity(Args& a) {
   const bool hx = take_num(a, "vx", vx), hy = take_num(a, "vy", vy), hw = take_num(a, "omega", om);
   done(a);
   if (!hx && !hy && !hw) fail("'velocity' needs vx=, vy= or omega=");
+  // A fixed degree of freedom takes its new velocity at the next integration: the velocity of
+  // the last half step stays, since the next cycle's joint increments are the motion it made.
+  // A free one starts from the velocity given.
   Blocks& B = model_.blocks;
   for (size_t b : sel) {
-    if (hx) B.vx[b] = vx, B.fixed_vx[b] = vx;
-    if (hy) B.vy[b] = vy, B.fixed_vy[b] = vy;
-    if (hw) B.omega[b] = om, B.fixed_omega[b] = om;
+    const uint8_t fix = B.fixity[b];
+    if (hx) B.fixed_vx[b] = vx, B.vx[b] = (fix & kFixX) ? B.vx[b] : vx;
+    if (hy) B.fixed_vy[b] = vy, B.vy[b] = (fix & kFixY) ? B.vy[b] : vy;
+    if (hw) B.fixed_omega[b] = om, B.omega[b] = (fix & kFixRot) ? B.omega[b] : om;
   }
 }
 

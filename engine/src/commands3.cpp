@@ -8,6 +8,7 @@
 #include "tessera/generators3.hpp"
 #include "tessera/random.hpp"
 #include "tessera/script.hpp"
+#include "tessera/solver3.hpp"
 
 namespace tessera {
 
@@ -160,7 +161,7 @@ void Interpreter::cmd_jset3(Args& a) {
   take_num(a, "seed", seed);
   if (dip < 0.0 || dip > 90.0) fail("dip must be in [0, 90] degrees");
   if (!(spacing > 0.0)) fail("the spacing must be positive");
-  if (!(persistence > 0.0 && persistence <= 1.0)) fail("persistence must be in (0, 1]");
+  if (!(persistence >= 0.0 && persistence <= 1.0)) fail("persistence must be in [0, 1]");
   // The extent to cover: the blocks' box, projected on the mean normal.
   const Blocks3& B = model_.blocks3;
   if (B.size() == 0) fail("there are no blocks to cut: make a region first");
@@ -227,10 +228,14 @@ void Interpreter::cmd_velocity3(Args& a) {
   has[2] = take_num(a, "vz", v[2]);
   done(a);
   if (!has[0] && !has[1] && !has[2]) fail("'velocity' needs vx=, vy= or vz=");
+  // As in 2D: a fixed component takes its new velocity at the next integration.
   Blocks3& B = model_.blocks3;
   for (size_t b : sel)
-    for (int k = 0; k < 3; ++k)
-      if (has[k]) B.body[b].velocity[k] = v[k], B.fixed_v[b][k] = v[k];
+    for (int k = 0; k < 3; ++k) {
+      if (!has[k]) continue;
+      B.fixed_v[b][k] = v[k];
+      if (!(B.fixity[b] & (1 << k))) B.body[b].velocity[k] = v[k];
+    }
 }
 
 void Interpreter::cmd_gravity3(Args& a) {
@@ -241,8 +246,28 @@ void Interpreter::cmd_gravity3(Args& a) {
 void Interpreter::cmd_join3(Args& a) {
   const auto sel = select(a);
   done(a);
-  const size_t pieces = whole_bodies3(model_.blocks3, sel).size();
+  const std::vector<size_t> body = whole_bodies3(model_.blocks3, sel);
+  const size_t pieces = body.size();
   if (pieces < 2) fail("'join' needs two or more blocks");
+  // The pieces must make one body: each touches another (within the tolerance), all connected.
+  const Blocks3& B = model_.blocks3;
+  std::vector<size_t> root(pieces);
+  for (size_t i = 0; i < pieces; ++i) root[i] = i;
+  const auto find = [&](size_t x) {
+    while (root[x] != x) x = root[x] = root[root[x]];
+    return x;
+  };
+  for (size_t i = 0; i < pieces; ++i)
+    for (size_t j = i + 1; j < pieces; ++j)
+      if (find(i) != find(j) &&
+          best_plane(B, static_cast<uint32_t>(body[i]), static_cast<uint32_t>(body[j])).gap <=
+              model_.tolerance())
+        root[find(i)] = find(j);
+  for (size_t i = 1; i < pieces; ++i)
+    if (find(i) != find(0))
+      fail("block " + std::to_string(B.id[body[i]]) + " does not touch the other blocks to join (" +
+           "no chain of pieces within the tolerance " + std::to_string(model_.tolerance()) +
+           " m joins it to block " + std::to_string(B.id[body[0]]) + ")");
   join_blocks3(model_, sel);
   const auto master = static_cast<size_t>(model_.blocks3.master[sel.front()]);
   log("join: block " + std::to_string(model_.blocks3.id[master]) + " now moves " +

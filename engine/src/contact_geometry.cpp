@@ -21,10 +21,24 @@ inline Vec2 edge_normal(const Blocks& B, uint32_t v) {
   return {u.y(), -u.x()};
 }
 
+// Whether the unit direction m points into the arc (between its end normals).
+inline bool faces(const CornerArc& arc, const Vec2& m) {
+  constexpr double slack = 1e-12;
+  return cross(arc.n_in, m) >= -slack && cross(m, arc.n_out) >= -slack;
+}
+
 }  // namespace
 
-bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const Vec2& c, double r,
-                  double max_depth, FeatureHit& hit, double* margin) {
+CornerArc corner_arc(const Blocks& B, uint32_t b, uint32_t v) {
+  const Vec2& ui = B.world_edge_dir[B.prev_vertex(b, v)];
+  const Vec2& uo = B.world_edge_dir[v];
+  return {B.world_arc_centre[v], B.arc_radius[v], Vec2(ui.y(), -ui.x()), Vec2(uo.y(), -uo.x())};
+}
+
+bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerArc& arc, double max_depth,
+                  FeatureHit& hit, double* margin) {
+  const Vec2& c = arc.centre;
+  const double r = arc.radius;
   const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
   const uint32_t vn = v0 + (vk - v0 + 1) % n;
   const Vec2& p = B.world_vertex[vk];
@@ -40,20 +54,29 @@ bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const Vec2& c, doubl
   if (t < lo || t > hi) return false;
   const Vec2 nrm(u.y(), -u.x());
   const double s = d.dot(nrm);
-  const double gap = s - r;
+  // The arc's point nearest the edge's line. An arc that does not face the edge (its circle
+  // would, reaching past the block's own outline) comes nearest at one of its ends, where it
+  // meets the block's straight edges.
+  const bool facing = faces(arc, -nrm);
+  const Vec2 q = facing                                    ? Vec2(c - r * nrm)
+                 : arc.n_in.dot(nrm) <= arc.n_out.dot(nrm) ? Vec2(c + r * arc.n_in)
+                                                           : Vec2(c + r * arc.n_out);
+  const double gap = (q - p).dot(nrm);
   if (gap < -max_depth) return false;
   hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
-  hit.point = c - nrm * (r + 0.5 * gap);
+  hit.point = q - nrm * (0.5 * gap);
   const double o = -gap;
-  hit.chord = o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
+  hit.chord = facing && o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
   // Outside a convex block, a point over an edge's span is in that edge's Voronoi region.
   if (margin)
     *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
   return true;
 }
 
-bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool corners, int first,
+bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool corners, int first,
                      int count, double max_depth, FeatureHit& hit) {
+  const Vec2& c = arc.centre;
+  const double r = arc.radius;
   const uint32_t v0 = B.vert_begin[b];
   const int n = static_cast<int>(B.vertex_count(b));
   const int nf = 2 * n;
@@ -64,23 +87,34 @@ bool nearest_feature(const Blocks& B, uint32_t b, const Vec2& c, double r, bool 
     const int f = ((first + s) % nf + nf) % nf;
     const uint32_t vk = v0 + static_cast<uint32_t>(f / 2);
     if (f % 2 == 1) {
-      if (!edge_feature(B, b, vk, c, r, max_depth, h, nullptr)) continue;
+      if (!edge_feature(B, b, vk, arc, max_depth, h, nullptr)) continue;
     } else {
       // Rounded corner: valid inside the cone of its two edge normals. A straight node of a
       // deformable block (no rounding) is met through the edges on either side of it.
       if (!corners || !B.convex[vk] || B.arc_radius[vk] <= 0.0) continue;
       const uint32_t vp = v0 + static_cast<uint32_t>((f / 2 + n - 1) % n);
-      const Vec2 dv = c - B.world_arc_centre[vk];
-      const double d = dv.norm();
+      const Vec2& cb = B.world_arc_centre[vk];
+      Vec2 dv = c - cb;
+      double d = dv.norm();
+      if (d <= 0.0) continue;
+      // The owner's arc towards the other: along the line of centres if the arc faces that
+      // way, else from the end of the arc nearer to the other one.
+      Vec2 qa = c;
+      double ra = r;
+      if (!faces(arc, -dv / d)) {
+        const Vec2 e0 = c + r * arc.n_in, e1 = c + r * arc.n_out;
+        qa = (e0 - cb).squaredNorm() <= (e1 - cb).squaredNorm() ? e0 : e1, ra = 0.0;
+        dv = qa - cb, d = dv.norm();
+        if (d <= 0.0) continue;
+      }
       const double slack = 1e-9 * d;
-      if (d <= 0.0 || cross(edge_normal(B, vp), dv) < -slack ||
-          cross(dv, edge_normal(B, vk)) < -slack)
+      if (cross(edge_normal(B, vp), dv) < -slack || cross(dv, edge_normal(B, vk)) < -slack)
         continue;
       const double rb = B.arc_radius[vk];
-      h.kind = kCornerCorner, h.feature = vk, h.gap = d - r - rb, h.normal = dv / d;
+      h.kind = kCornerCorner, h.feature = vk, h.gap = d - ra - rb, h.normal = dv / d;
       if (h.gap < -max_depth) continue;
-      h.point = c - h.normal * (r + 0.5 * h.gap);
-      h.chord = circle_chord(d, r, rb);
+      h.point = qa - h.normal * (ra + 0.5 * h.gap);
+      h.chord = circle_chord(d, ra, rb);
     }
     if (found && std::abs(h.gap) >= best) continue;
     found = true, best = std::abs(h.gap), hit = h;

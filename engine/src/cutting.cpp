@@ -79,15 +79,19 @@ std::vector<Curve> hole_splitters(Face f, Arrangement::Inner_ccb_const_iterator 
   std::vector<K::FT> taken;
   for (const auto& [e, on_hole] : edges) taken.push_back(e->source()->point().y());
   std::sort(taken.begin(), taken.end());
-  // The line through the middle of the widest gap between the hole's vertex heights that meets
-  // no vertex of the face.
+  // The line through the middle of the widest gap between vertex heights of the face (hole and
+  // outline alike) within the hole's height: it meets no vertex. (Gaps of the hole's heights
+  // alone could all be blocked by an outline vertex, e.g. an octagon around a square centred
+  // on it, and the ring then went unsplit and was taken whole as a piece.)
+  if (ys.size() < 2) return {};
+  taken.erase(std::unique(taken.begin(), taken.end()), taken.end());
   K::FT c = 0;
   bool found = false;
   K::FT best = -1;
-  for (size_t i = 0; i + 1 < ys.size(); ++i) {
-    const K::FT mid = (ys[i] + ys[i + 1]) / 2;
-    if (std::binary_search(taken.begin(), taken.end(), mid)) continue;
-    if (ys[i + 1] - ys[i] > best) best = ys[i + 1] - ys[i], c = mid, found = true;
+  for (size_t i = 0; i + 1 < taken.size(); ++i) {
+    if (taken[i] < ys.front() || taken[i + 1] > ys.back()) continue;
+    if (taken[i + 1] - taken[i] > best)
+      best = taken[i + 1] - taken[i], c = (taken[i] + taken[i + 1]) / 2, found = true;
   }
   if (!found) return {};
   // Crossings of the line with the boundary, in order along it.

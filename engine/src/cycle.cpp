@@ -1,9 +1,11 @@
 // One cycle, top to bottom: detection when due, contact geometry and joint law, interface
 // lengths and forces, then block resultants, damping and integration.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "stage_timer.hpp"
 #include "tessera/contact_geometry.hpp"
@@ -21,6 +23,17 @@ inline Vec2 point_velocity(const Blocks& B, uint32_t b, const Vec2& p) {
   return {B.vx[b] - B.omega[b] * (p.y() - B.y[b]), B.vy[b] + B.omega[b] * (p.x() - B.x[b])};
 }
 
+// Whether corner v is inside block b at about the overlap's depth: its distance to b's outline
+// at least half the overlap (a toe sunk into a soft joint), not at b's edge or vertex.
+bool corner_buried(const Blocks& B, uint32_t v, uint32_t b, double overlap) {
+  const std::vector<Vec2> poly = B.world_polygon(b);
+  const Vec2& p = B.world_vertex[v];
+  if (!point_in_polygon(p, poly)) return false;
+  for (size_t k = 0; k < poly.size(); ++k)
+    if (segment_distance(p, poly[k], poly[(k + 1) % poly.size()]) < 0.5 * overlap) return false;
+  return true;
+}
+
 // Contact geometry from the current positions: the nearest feature of the other block to each
 // corner (searched around last cycle's feature), gap, normal, contact point and chord.
 void update_contacts(Model& m) {
@@ -31,12 +44,12 @@ void update_contacts(Model& m) {
       const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
       FeatureHit hit;
       const bool lost = C.kind[i] == kLost;
-      const Vec2& c = B.world_arc_centre[v];
-      const double r = B.arc_radius[v], depth = max_contact_depth(B, a, b);
+      const CornerArc arc = corner_arc(B, a, v);
+      const double depth = max_contact_depth(B, a, b);
       // A corner in a notch keeps its face: valid or lost, no search.
       if (C.flags[i] & kNotch) {
         if (C.kind[i] == kCornerEdge &&
-            edge_feature(B, b, C.feature[i], c, r, depth, hit, nullptr)) {
+            edge_feature(B, b, C.feature[i], arc, depth, hit, nullptr)) {
           C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point;
           C.chord[i] = hit.chord;
         } else {
@@ -48,15 +61,23 @@ void update_contacts(Model& m) {
       }
       // Fast path: still well inside the span of the same edge.
       double margin = -1.0;
-      if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], c, r, depth, hit, &margin) &&
+      if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], arc, depth, hit, &margin) &&
           margin > 0.0) {
         C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point,
         C.chord[i] = hit.chord;
         continue;
       }
       const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
-      const int count = lost ? 2 * static_cast<int>(B.vertex_count(b)) : 5;
-      if (!nearest_feature(B, b, c, r, a < b, first, count, depth, hit)) {
+      const int all = 2 * static_cast<int>(B.vertex_count(b));
+      bool found = nearest_feature(B, b, arc, a < b, first, lost ? all : 5, depth, hit);
+      // An overlap past the arc's radius is rare and suspect: the whole block is searched for a
+      // nearer feature, and it is believed only if the owner's sharp corner is inside b (a toe
+      // sunk into a soft joint is; a corner at the tip of a thin sliver of b, measured against
+      // the sliver's far side, is not).
+      if (found && hit.gap < -arc.radius)
+        found = (lost || nearest_feature(B, b, arc, a < b, 0, all, depth, hit)) &&
+                (hit.gap >= -arc.radius || corner_buried(B, v, b, -hit.gap));
+      if (!found) {
         // The corner has left the reach of every feature: it carries nothing until found again.
         C.kind[i] = kLost;
         C.gap[i] = std::numeric_limits<double>::infinity();
@@ -69,12 +90,43 @@ void update_contacts(Model& m) {
   });
 }
 
+// The stretch of joint a corner stands for when it is alone on its joint line (its neighbour
+// has lifted off): the corner as a sharp wedge cut by the other block's surface, each of its two
+// edges overlapping up to where it leaves that surface (at most the edge's straight part), and
+// half of that extent, since a spring bed under a wedge carries kn o s / 2. Without it the
+// length is the arc's chord, which vanishes as the overlap passes 2d, and a toppling block on
+// soft joints sinks through its base on its toe. Just after the neighbour lifts, the wedge runs
+// the whole face and the length is the share the two had: (w - 2d) / 2.
+double wedge_length(const Blocks& B, const Contacts& C, uint32_t i) {
+  const uint32_t a = C.a[i], v = C.corner[i];
+  const uint32_t vp = B.prev_vertex(a, v);
+  const Vec2 nrm = C.normal[i], t = perp(nrm);
+  // Depth of the sharp corner below the other block's surface (normals point to the owner).
+  const Vec2 surface = C.point[i] - 0.5 * C.gap[i] * nrm;
+  const double depth = (surface - B.world_vertex[v]).dot(nrm);
+  if (!(depth > 0.0)) return 0.0;
+  const uint32_t v0 = B.vert_begin[a], n = B.vertex_count(a);
+  const uint32_t next = v0 + (v - v0 + 1) % n;
+  double width = 0.0;
+  // One edge leaving the corner along u: it rises out of the surface after depth / rise.
+  const auto edge = [&](const Vec2& u, double straight) {
+    const double rise = u.dot(nrm), cap = std::max(straight, 0.0);
+    const double s = rise * cap > depth ? depth / rise : cap;
+    width += s * std::abs(u.dot(t));
+  };
+  edge(B.world_edge_dir[v], B.edge_length[v] - B.round_length[v] - B.round_length[next]);
+  edge(-B.world_edge_dir[vp], B.edge_length[vp] - B.round_length[vp] - B.round_length[v]);
+  return 0.5 * width;
+}
+
 // Shares a joint line's length among its contacts, given as (position along the line, index):
 // L = RQ1/2 + RQ2/2 with the neighbours as Q1, Q2, never less than a contact's own chord.
 // Contacts closer than `merge` stand at one point (two corners meeting face to face): the
 // point's share is split evenly, so that round-off in their order cannot move the length from
-// one to the other from cycle to cycle.
-void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge, Contacts& C) {
+// one to the other from cycle to cycle. A line of one point (a corner whose neighbour lifted
+// off) has no neighbours to share with: its contacts take their corners' wedge lengths.
+void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge, const Blocks& B,
+                  Contacts& C) {
   // Insertion sort: a line has a handful of contacts, mostly in order already.
   for (size_t j = 1; j < along.size(); ++j)
     for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q) std::swap(along[q], along[q - 1]);
@@ -88,6 +140,13 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
   };
   size_t g0 = 0, g1 = 0;
   double prev = 0.0, centre = k ? group(0, g1) : 0.0;
+  if (k && g1 == k) {
+    for (size_t j = 0; j < k; ++j) {
+      const uint32_t i = along[j].second;
+      C.length[i] = std::max(wedge_length(B, C, i) / static_cast<double>(k), C.chord[i]);
+    }
+    return;
+  }
   while (g0 < k) {
     size_t g2 = g1;
     const double next = g1 < k ? group(g1, g2) : centre;
@@ -100,6 +159,33 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
   }
 }
 
+// Overlaps beyond this share of the deepest plausible one (a quarter of the smaller block's
+// size) stop the run: past it a corner would soon lose its feature and fall through.
+constexpr double kOverlapLimit = 0.5;
+
+// Stops the run on contact i, as UDEC's "contact overlap too great" does.
+[[noreturn]] void throw_overlap(const Model& m, uint32_t i) {
+  const Blocks& B = m.blocks;
+  const Contacts& C = m.contacts;
+  const auto name = [&](uint32_t b) {
+    std::string s = "block " + std::to_string(B.id[b]);
+    if (B.group[b] >= 0) s += " (group " + m.groups[static_cast<size_t>(B.group[b])] + ")";
+    return s;
+  };
+  std::ostringstream msg;
+  const uint32_t a = C.a[i], b = C.b[i];
+  msg << "contact overlap too great at cycle " << m.cycle << ": " << name(a) << " and " << name(b)
+      << " overlap by " << -C.gap[i] << " m near x=" << C.point[i].x() << ", y=" << C.point[i].y()
+      << " (more than " << kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])
+      << " m, an eighth of the smaller block's size; corner " << C.corner[i] - B.vert_begin[a] + 1
+      << " of block " << B.id[a] << " against the "
+      << (C.kind[i] == kCornerEdge ? "edge from vertex " : "corner ")
+      << C.feature[i] - B.vert_begin[b] + 1 << " of block " << B.id[b]
+      << "): the joint's normal stiffness is too low "
+         "for the load it carries, or the blocks were made overlapping";
+  throw ModelError(msg.str());
+}
+
 // Per interface: the length of each contact, then the joint law for each contact, giving its
 // force. Contacts facing the same way form one joint line (a concave block can touch another
 // along two faces); each line shares its length on its own.
@@ -108,6 +194,9 @@ void update_interfaces(Model& m) {
   Contacts& C = m.contacts;
   const double dt = m.dt;
   const double merge = 0.25 * m.settings.rounding;
+  const double roundoff = m.roundoff_gap();
+  // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
+  std::atomic<uint32_t> too_deep{std::numeric_limits<uint32_t>::max()};
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
@@ -131,7 +220,7 @@ void update_interfaces(Model& m) {
                 placed[q - c0] = 1;
                 along.emplace_back(C.point[q].dot(t), q);
               }
-            share_length(along, merge, C);
+            share_length(along, merge, B, C);
           }
         };
         for (size_t p = p0; p < p1; ++p) {
@@ -152,7 +241,7 @@ void update_interfaces(Model& m) {
             along.emplace_back(C.point[i].dot(t_first), i);
           }
           if (one_line) {
-            if (!along.empty()) share_length(along, merge, C);
+            if (!along.empty()) share_length(along, merge, B, C);
           } else {
             general_lines(c0, c1);
           }
@@ -176,7 +265,12 @@ void update_interfaces(Model& m) {
               continue;
             }
             // Open, unbonded, and open before: nothing to do but remember the opening.
-            const double overlap = -C.gap[i] + C.closure[i];
+            const double overlap = without_roundoff(-C.gap[i] + C.closure[i], roundoff);
+            if (-C.gap[i] > kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])) {
+              uint32_t seen = too_deep.load(std::memory_order_relaxed);
+              while (i < seen && !too_deep.compare_exchange_weak(seen, i)) {
+              }
+            }
             const double un = overlap + C.dilation[i];
             if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
               C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
@@ -208,6 +302,8 @@ void update_interfaces(Model& m) {
         }
       },
       64);
+  if (const uint32_t i = too_deep.load(); i != std::numeric_limits<uint32_t>::max())
+    throw_overlap(m, i);
 }
 
 // Sign of a velocity component for local damping (zero at rest).
@@ -393,8 +489,10 @@ double compute_timestep(const Model& m) {
 void prepare(Model& m) {
   if (m.dim == 3) return prepare3(m);
   if (m.blocks.size() == 0) throw ModelError("the model has no blocks");
-  if (m.joints.empty()) throw ModelError("no joint properties are defined (use 'joint define')");
-  if (m.settings.rounding <= 0.0) throw ModelError("the rounding length is not set (use 'round')");
+  // Joint properties are asked for by the first contact that needs them (naming its blocks): a
+  // single zoned block has none. Contacts need the rounding length.
+  if (m.settings.rounding <= 0.0 && m.blocks.size() > 1)
+    throw ModelError("the rounding length is not set (use 'round')");
   for (size_t b = 0; b < m.blocks.size(); ++b)
     if (m.blocks.mass[b] <= 0.0 && m.blocks.fixity[b] != kFixAll)
       throw ModelError("block " + std::to_string(m.blocks.id[b]) +

@@ -6,6 +6,7 @@
 
 #include "stage_timer.hpp"
 #include "tessera/parallel.hpp"
+#include "tessera/solver.hpp"
 #include "tessera/solver3.hpp"
 
 namespace tessera {
@@ -282,8 +283,8 @@ double compute_timestep3(const Model& m) {
 void prepare3(Model& m) {
   const Blocks3& B = m.blocks3;
   if (B.size() == 0) throw ModelError("the model has no blocks");
-  if (m.joints.empty()) throw ModelError("no joint properties are defined (use 'joint define')");
-  if (m.tolerance() <= 0.0)
+  // Joint properties are asked for by the first contact that needs them, naming its blocks.
+  if (m.tolerance() <= 0.0 && B.size() > 1)
     throw ModelError("the contact tolerance is not set (use 'tolerance T' or 'round D')");
   for (size_t b = 0; b < B.size(); ++b)
     if (B.body[b].mass <= 0.0 && B.fixity[b] != kFix3All && !B.is_slave(b))
@@ -295,7 +296,7 @@ void prepare3(Model& m) {
                              ? B.body[b].angular_velocity()
                              : B.fixed_w[b];
   if (m.dt_dirty) {
-    m.dt = compute_timestep3(m);
+    m.dt = compute_timestep(m);
     m.dt_dirty = false;
   }
   if (m.det_pos3.size() != B.size()) m.detection_due = true;

@@ -108,14 +108,15 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
   const int nf = 2 * static_cast<int>(B.vertex_count(other));
   for (uint32_t v = B.vert_begin[owner]; v < B.vert_begin[owner + 1]; ++v) {
     if (!B.convex[v]) continue;
-    const Vec2& c = B.world_arc_centre[v];
-    const double r = B.arc_radius[v];
+    const CornerArc arc = corner_arc(B, owner, v);
+    const Vec2& c = arc.centre;
+    const double r = arc.radius;
     if (c.x() + r < other_box.x0 || c.x() - r > other_box.x1 || c.y() + r < other_box.y0 ||
         c.y() - r > other_box.y1)
       continue;
     FeatureHit hit;
     const double depth = max_contact_depth(B, owner, other);
-    if (!nearest_feature(B, other, c, r, corners, 0, nf, depth, hit) || hit.gap >= reach) continue;
+    if (!nearest_feature(B, other, arc, corners, 0, nf, depth, hit) || hit.gap >= reach) continue;
     const uint32_t lo = std::min(owner, other), hi = std::max(owner, other);
     out.push_back({lo, hi, owner, v, other, 0, hit});
     if (B.all_convex[other] || hit.kind != kCornerEdge) continue;
@@ -124,7 +125,7 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
     FeatureHit second, h;
     bool has_second = false;
     for (uint32_t e = B.vert_begin[other]; e < B.vert_begin[other + 1]; ++e)
-      if (edge_feature(B, other, e, c, r, depth, h, nullptr) && std::abs(h.gap) < reach &&
+      if (edge_feature(B, other, e, arc, depth, h, nullptr) && std::abs(h.gap) < reach &&
           h.normal.dot(hit.normal) < 0.7 && (!has_second || std::abs(h.gap) < std::abs(second.gap)))
         second = h, has_second = true;
     if (!has_second) continue;
@@ -274,7 +275,15 @@ std::string find_overlap(const Model& m) {
         }
       return false;
     };
-    if (deep_inside(pa, pb) || deep_inside(pb, pa) || edges_cross()) {
+    // A block's centroid (when it lies in the block) deep inside the other: a block inside
+    // another, or two blocks made twice over, where no vertex is deeper than the other's edges.
+    auto centroid_inside = [&](uint32_t p, const std::vector<Vec2>& own,
+                               const std::vector<Vec2>& poly) {
+      const Vec2 c(B.x[p], B.y[p]);
+      return point_in_polygon(c, own) && deep_inside({c}, poly);
+    };
+    if (deep_inside(pa, pb) || deep_inside(pb, pa) || edges_cross() ||
+        centroid_inside(lo, pa, pb) || centroid_inside(hi, pb, pa)) {
       std::ostringstream s;
       s << "blocks " << B.id[lo] << " and " << B.id[hi] << " overlap (near x=" << B.x[lo]
         << ", y=" << B.y[lo] << ")";

@@ -60,7 +60,19 @@ class Parser {
       }
     }
   }
+  // Nesting (parentheses, signs, calls) is bounded: each level is a frame of the C++ stack.
+  static constexpr int kMaxDepth = 200;
+  struct Nest {
+    Parser& p;
+    explicit Nest(Parser& parser) : p(parser) {
+      if (++p.depth_ > kMaxDepth)
+        p.fail("it nests more than " + std::to_string(kMaxDepth) +
+               " levels deep (parentheses, signs or calls)");
+    }
+    ~Nest() { --p.depth_; }
+  };
   double unary() {
+    const Nest nest(*this);
     if (eat('-')) return -unary();
     if (eat('+')) return unary();
     return power();
@@ -144,6 +156,7 @@ class Parser {
   const std::string& s_;
   const ExprContext& ctx_;
   size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace

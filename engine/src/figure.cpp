@@ -5,8 +5,8 @@ namespace tessera {
 
 const std::vector<std::string>& colour_by_names() {
   static const std::vector<std::string> names{
-      "group", "material", "displacement", "xdisp", "ydisp",  "velocity", "rotation",
-      "sxx",   "syy",      "sxy",          "szz",   "sigma1", "sigma3",   "state"};
+      "group", "material", "displacement", "xdisp", "ydisp",  "zdisp",  "velocity", "rotation",
+      "sxx",   "syy",      "sxy",          "szz",   "sigma1", "sigma3", "state"};
   return names;
 }
 

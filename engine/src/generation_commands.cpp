@@ -264,7 +264,10 @@ void Interpreter::run_checks(bool before_run) {
   size_t errors = 0;
   std::string first_error;
   for (const Finding& f : found) {
-    log(file_ + ":" + std::to_string(line_) + ": " + f.text());
+    if (f.error)
+      log(file_ + ":" + std::to_string(line_) + ": " + f.text());
+    else
+      warn(f.text().substr(f.text().find(' ') + 1));
     if (f.error && !errors++) first_error = f.text();
   }
   if (!before_run) {

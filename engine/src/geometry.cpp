@@ -51,6 +51,13 @@ bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
          (d3 == 0 && on_seg(c, d, a)) || (d4 == 0 && on_seg(c, d, b));
 }
 
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
 bool point_in_polygon(const Vec2& p, const std::vector<Vec2>& pts) {
   bool inside = false;
   for (size_t i = 0, n = pts.size(), j = n - 1; i < n; j = i++) {

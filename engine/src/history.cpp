@@ -187,9 +187,12 @@ void write_histories_csv(const Histories& h, std::ostream& out) {
   char buf[32];
   for (size_t r = 0; r < h.rows(); ++r) {
     out << h.cycles[r];
+    // No value (a deleted block, a series added later) is an empty cell, as spreadsheets read it.
     for (size_t c = 0; c < h.columns(); ++c) {
+      out << ',';
+      if (std::isnan(h.at(r, c))) continue;
       std::snprintf(buf, sizeof buf, "%.10g", h.at(r, c));
-      out << ',' << buf;
+      out << buf;
     }
     out << '\n';
   }

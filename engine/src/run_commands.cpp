@@ -70,10 +70,27 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
   log(what + ": " + progress_line(model_, wall));
 }
 
+void Interpreter::warn_history_size(uint64_t cycles) {
+  const Histories& h = model_.histories;
+  if (h.series.empty() || h.interval == 0) return;
+  // About 17 characters a value in the CSV, and 8 bytes a value in memory.
+  const double rows = double(h.rows()) + double(cycles) / double(h.interval);
+  const double mb = rows * (12.0 + 17.0 * double(h.columns())) / 1e6;
+  if (mb < 100.0) return;
+  char buf[300];
+  std::snprintf(buf, sizeof buf,
+                "the histories will reach %.3g rows: about %.0f MB in history.csv and %.0f MB of "
+                "memory; thin them with 'history interval %.0f' (100,000 rows) before this line",
+                rows, mb, rows * 8.0 * double(h.columns() + 1) / 1e6,
+                std::ceil(double(h.interval) * rows / 1e5));
+  warn(buf);
+}
+
 void Interpreter::cmd_step(Args& a) {
   if (a.words.size() != 1) fail("write 'step N' with the number of cycles N");
   const auto n = static_cast<uint64_t>(integer(a.words[0], 0));
   done(a);
+  warn_history_size(n);
   run_with_progress([&](const Progress& p) { return run_cycles(model_, n, p, 1) == n; }, "step");
 }
 
@@ -87,6 +104,7 @@ void Interpreter::cmd_solve(Args& a) {
   if (ratio <= 0.0) fail("the ratio limit must be positive");
   if (cycles < 1 || cycles != std::floor(cycles))
     fail("the cycle limit must be a whole number of at least 1");
+  warn_history_size(static_cast<uint64_t>(cycles));
   SolveResult r;
   run_with_progress(
       [&](const Progress& p) {
@@ -97,12 +115,10 @@ void Interpreter::cmd_solve(Args& a) {
   stages_.back().converged = r.converged;
   if (!r.converged && !r.stopped) {
     char buf[200];
-    std::snprintf(
-        buf, sizeof buf,
-        "%s:%d: warning: solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e",
-        file_.c_str(), line_, cycles, model_.ratio, ratio);
-    summary_.warnings.emplace_back(buf);
-    log(buf);
+    std::snprintf(buf, sizeof buf,
+                  "solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e", cycles,
+                  model_.ratio, ratio);
+    warn(buf);
   }
 }
 
@@ -280,8 +296,15 @@ void Interpreter::finish() {
   j["contacts"] = model_.dim == 3 ? model_.contacts3.size() : model_.contacts.size();
   j["threads"] = thread_count();
   j["warnings"] = summary_.warnings;
-  std::ofstream s((fs::path(out_dir_) / "summary.json").string());
-  s << j.dump(2) << '\n';
+  // Bytes that are not UTF-8 (a title typed in another encoding) become U+FFFD rather than
+  // stopping the write; the file is written whole and then moved in place, never left empty.
+  const fs::path path = fs::path(out_dir_) / "summary.json", part = path.string() + ".part";
+  {
+    std::ofstream s(part);
+    s << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    if (!s) throw std::runtime_error(part.string() + ": cannot write");
+  }
+  fs::rename(part, path);
 }
 
 }  // namespace tessera

@@ -82,6 +82,12 @@ void Interpreter::log(const std::string& s) const {
   log_(s);
 }
 
+void Interpreter::warn(const std::string& message) {
+  const std::string line = file_ + ":" + std::to_string(line_) + ": warning: " + message;
+  summary_.warnings.push_back(line);
+  log(line);
+}
+
 void Interpreter::fail(const std::string& message) const {
   throw ScriptError(file_, line_, message);
 }
@@ -89,6 +95,12 @@ void Interpreter::fail(const std::string& message) const {
 void Interpreter::run_file(const std::string& path) {
   const std::string saved_file = file_;
   const int saved_line = line_;
+  // A folder opens as a stream on Linux and reads as empty: refuse it by name.
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    if (call_depth_ > 0) fail("'" + path + "' is a folder, not a script file");
+    throw ScriptError(path, 0, "is a folder, not a script file");
+  }
   std::ifstream in(path);
   if (!in) {
     if (call_depth_ > 0) fail("cannot open '" + path + "'");
@@ -107,6 +119,8 @@ void Interpreter::run_file(const std::string& path) {
   int n = 0;
   while (std::getline(in, text)) {
     ++n;
+    // A UTF-8 byte-order mark (some Windows editors write one) is not part of the first word.
+    if (n == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     // A stop from another thread ends the script between lines as well as inside a run.
     if (stop_ && stop_->load()) {
       log("stopped before " + path + ":" + std::to_string(n));
@@ -296,18 +310,42 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   }
   if (three && take(a, "at", v)) {
     const Vec3 p = point3(v);
-    bool hit = false;
-    for (size_t b = 0; b < B3.size() && !hit; ++b)
-      if (B3.contains(b, p)) ids.push_back(b), hit = true;
-    if (!hit) fail("no block contains the point " + v);
+    // The block holding the point, or else the one whose surface is nearest within the contact
+    // tolerance (a point on a face, as on the top of a column).
+    size_t best = B3.size();
+    double nearest = model_.tolerance();
+    for (size_t b = 0; b < B3.size() && nearest > 0.0; ++b) {
+      double outside = -1e300;
+      for (uint32_t f = B3.face_begin[b]; f < B3.face_begin[b + 1]; ++f)
+        outside = std::max(outside, B3.world_normal[f].dot(p) - B3.world_offset[f]);
+      if (B3.contains(b, p)) outside = 0.0;
+      if (outside <= nearest) nearest = outside, best = b;
+    }
+    if (best == B3.size())
+      fail("no block contains the point " + v + " or has its surface within the tolerance");
+    ids.push_back(best);
     any = true;
   }
   if (!three && take(a, "at", v)) {
     const Vec2 p = point(v);
-    bool hit = false;
-    for (size_t b = 0; b < B.size() && !hit; ++b)
-      if (point_in_polygon(p, B.world_polygon(b))) ids.push_back(b), hit = true;
-    if (!hit) fail("no block contains the point " + v);
+    // The block holding the point, or else the one whose outline is nearest within the contact
+    // tolerance (a point on an edge, as on the top of a column).
+    size_t best = B.size();
+    double nearest = model_.tolerance();
+    for (size_t b = 0; b < B.size() && nearest > 0.0; ++b) {
+      const std::vector<Vec2> poly = B.world_polygon(b);
+      if (point_in_polygon(p, poly)) {
+        best = b, nearest = 0.0;
+        break;
+      }
+      for (size_t k = 0; k < poly.size(); ++k)
+        if (const double d = segment_distance(p, poly[k], poly[(k + 1) % poly.size()]);
+            d <= nearest)
+          nearest = d, best = b;
+    }
+    if (best == B.size())
+      fail("no block contains the point " + v + " or has its outline within the tolerance");
+    ids.push_back(best);
     any = true;
   }
   // Centroid inside a circle X,Y,R or a polygon (X,Y X,Y ...).

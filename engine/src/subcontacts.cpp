@@ -253,12 +253,13 @@ void update_contact3(const Model& m, Contact3& c) {
   // The joint law at every sub-contact.
   const double dt = m.dt;
   const JointProperties& jp = m.joints[c.joint];
+  const double roundoff = m.roundoff_gap();
   const Vec3& wa = B.omega[ma_body];
   const Vec3& wb = B.omega[mb_body];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
   for (SubContact& s : c.subs) {
-    const double overlap = -s.gap;
+    const double overlap = without_roundoff(-s.gap, roundoff);
     const double un = overlap + s.dilation;
     if (un <= 0.0 && s.fn == 0.0 && !(s.flags & (kBonded | kTouching))) {
       s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();

@@ -20,6 +20,8 @@ double block_value(const SnapshotBlock& b, ColourBy c) {
       return b.x - b.x_ref;
     case ColourBy::kYDisp:
       return b.y - b.y_ref;
+    case ColourBy::kZDisp:
+      return b.z - b.z_ref;
     case ColourBy::kVelocity:
       return std::hypot(b.vx, b.vy, b.vz);
     case ColourBy::kRotation:
@@ -73,6 +75,8 @@ std::string value_title(ColourBy c) {
       return "x displacement [m]";
     case ColourBy::kYDisp:
       return "y displacement [m]";
+    case ColourBy::kZDisp:
+      return "z displacement [m]";
     case ColourBy::kVelocity:
       return "velocity [m/s]";
     case ColourBy::kRotation:

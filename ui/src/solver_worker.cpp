@@ -48,11 +48,13 @@ void SolverWorker::stop() {
   resume_.notify_all();
 }
 
-void SolverWorker::publish() {
+void SolverWorker::publish(bool held) {
   Model& m = interp_->model();
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
   auto snap = std::make_shared<Snapshot>(make_snapshot(m, interp_->title(), interp_->stages()));
   snap->serial = ++serial_;
+  snap->made_on = std::this_thread::get_id();
+  snap->held = held;
   {
     std::lock_guard lock(mutex_);
     latest_ = std::move(snap);
@@ -64,7 +66,7 @@ void SolverWorker::publish() {
 void SolverWorker::observe(const Model&) {
   if (want_snapshot_.exchange(false)) publish();
   if (paused_) {
-    publish();
+    publish(true);
     std::unique_lock lock(mutex_);
     resume_.wait(lock, [this] { return !paused_ || stop_; });
   }

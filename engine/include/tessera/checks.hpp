@@ -10,11 +10,12 @@
 namespace tessera {
 
 struct Finding {
-  bool error = false;  // an error stops a run unless the script says to go on
-  int block = 0;       // the user's block number
-  Vec2 where = Vec2::Zero();
+  bool error = false;         // an error stops a run unless the script says to go on
+  int block = 0;              // the user's block number
+  Vec3 where = Vec3::Zero();  // the block's centroid (z unused in 2D)
   std::string message;
-  std::string text() const;  // "error: block 12 at (3.5, 1.2): ..."
+  bool three = false;        // a 3D model's block: the centroid is printed with z
+  std::string text() const;  // "error: block 12 at (3.5, 1.2): ...", "(3.5, 1.2, 0.4)" in 3D
 };
 
 struct CheckLimits {

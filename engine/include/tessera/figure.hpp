@@ -22,6 +22,7 @@ enum class ColourBy : int {
   kDisplacement,
   kXDisp,
   kYDisp,
+  kZDisp,  // 3D models (zero in 2D)
   kVelocity,
   kRotation,
   // Zones of deformable blocks (rigid blocks grey): stresses (tension positive), plastic state.

@@ -33,6 +33,8 @@ std::string polygon_problem(const std::vector<Vec2>& pts);
 
 // True if the two closed segments a-b and c-d cross or touch.
 bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+// Distance from p to the closed segment a-b.
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b);
 // True if p lies strictly inside the polygon (even-odd rule).
 bool point_in_polygon(const Vec2& p, const std::vector<Vec2>& pts);
 

@@ -59,6 +59,12 @@ class JointLaw {
   }
 };
 
+// An overlap within round-off of zero is zero: a block set exactly on another (a gap of 1e-18 m
+// from the arithmetic of its coordinates) is neither in tension nor pressed.
+inline double without_roundoff(double overlap, double roundoff) {
+  return overlap <= roundoff && overlap >= -roundoff ? 0.0 : overlap;
+}
+
 // The law registered under a name, or nullptr.
 const JointLaw* find_joint_law(const std::string& name);
 std::vector<std::string> joint_law_names();

@@ -100,6 +100,8 @@ struct Model {
   int block_group(size_t b) const { return dim == 3 ? blocks3.group[b] : blocks.group[b]; }
   // Contact tolerance in force: the user's, or the rounding length.
   double tolerance() const;
+  // Gaps this close to zero are round-off of the coordinates, not openings (see joint_law.hpp).
+  double roundoff_gap() const { return 1e-9 * tolerance(); }
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
   void touch() { dt_dirty = true, detection_due = true; }
 };

@@ -220,6 +220,10 @@ class Interpreter {
   void run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what);
   void check_ready();
   void log(const std::string& s) const;
+  // Logs a warning at the current file:line and keeps it for summary.json.
+  void warn(const std::string& message);
+  // Warns when the histories would grow past ~100 MB of CSV over the next `cycles` cycles.
+  void warn_history_size(uint64_t cycles);
 
   Model model_;
   std::map<std::string, double> vars_;

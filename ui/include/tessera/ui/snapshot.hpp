@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tessera/geometry.hpp"
@@ -61,6 +62,9 @@ struct Entry {
 
 struct Snapshot {
   uint64_t serial = 0;  // increases with every snapshot the worker takes
+  // Made on this thread (the solver's); `held`: taken by a pause, the solver waits after it.
+  std::thread::id made_on;
+  bool held = false;
   std::string title;
   uint64_t cycle = 0;
   double time = 0, dt = 0, ratio = 1;

@@ -67,7 +67,7 @@ class SolverWorker : public QObject {
  private:
   // Runs body as one command; true if it succeeded.
   bool run(const QString& what, const std::function<void()>& body);
-  void publish();
+  void publish(bool held = false);
   void observe(const Model& m);
 
   std::unique_ptr<Interpreter> interp_;
