@@ -1,4 +1,4 @@
-// Uniform-strain triangles and nodal central differences.
+// Uniform-strain triangles with nodal mixed discretization, and nodal central differences.
 #include "tessera/continuum.hpp"
 
 #include <algorithm>
@@ -106,6 +106,23 @@ std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh) {
 namespace {
 // The size of the forces meeting at each node, for the unbalanced-force ratio.
 thread_local std::vector<double> scale;
+// Scratch of the nodal mixed discretization, per zone: strain increment, area, in-plane
+// volumetric increment, isotropic part of the plastic correction, and their nodal averages;
+// per node: weighted sums and weights.
+thread_local std::vector<StrainIncrement> zone_de;
+thread_local std::vector<double> zone_area_now, zone_ev, zone_ev_mixed, zone_dp, zone_dp_mixed;
+thread_local std::vector<double> node_sum, node_weight;
+
+// A zone's shape-function gradients on the current shape, each times twice the area.
+std::array<Vec2, 3> zone_gradients(const Continuum& c, const std::array<uint32_t, 3>& t) {
+  std::array<Vec2, 3> grad;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& pj = c.pos[t[(k + 1) % 3]];
+    const Vec2& pk = c.pos[t[(k + 2) % 3]];
+    grad[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
+  }
+  return grad;
+}
 }  // namespace
 
 void continuum_cycle(Continuum& c) {
@@ -114,25 +131,24 @@ void continuum_cycle(Continuum& c) {
 }
 
 void zone_forces(Continuum& c) {
-  const size_t nn = c.pos.size();
+  const size_t nn = c.pos.size(), nz = c.zones.size();
   scale.assign(nn, 0.0);
   for (size_t n = 0; n < nn; ++n) {
     c.force[n] = c.applied[n] + c.mass[n] * c.gravity;
     scale[n] = c.applied[n].norm() + c.mass[n] * c.gravity.norm();
   }
-  // Zones: strain increment from the nodal velocities (uniform gradient of the linear field),
-  // the constitutive update, then the stress as nodal forces f_i = -A sigma grad N_i.
-  for (size_t z = 0; z < c.zones.size(); ++z) {
+  zone_de.resize(nz), zone_area_now.resize(nz), zone_ev.resize(nz), zone_ev_mixed.resize(nz);
+  zone_dp.resize(nz), zone_dp_mixed.resize(nz), node_sum.resize(nn), node_weight.resize(nn);
+  // Zones: strain increment from the nodal velocities (uniform gradient of the linear field).
+  for (size_t z = 0; z < nz; ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
-    if (!p.impl->solid()) continue;
+    if (!p.impl->solid()) {
+      zone_area_now[z] = 0, zone_ev[z] = 0;
+      continue;
+    }
     const auto& t = c.zones[z];
     const double a2 = 2.0 * zone_area(c, z);
-    std::array<Vec2, 3> grad;  // grad N_i times 2A
-    for (int k = 0; k < 3; ++k) {
-      const Vec2& pj = c.pos[t[(k + 1) % 3]];
-      const Vec2& pk = c.pos[t[(k + 2) % 3]];
-      grad[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
-    }
+    const std::array<Vec2, 3> grad = zone_gradients(c, t);
     double dvx_dx = 0, dvx_dy = 0, dvy_dx = 0, dvy_dy = 0;
     for (int k = 0; k < 3; ++k) {
       const Vec2& v = c.vel[t[k]];
@@ -140,9 +156,49 @@ void zone_forces(Continuum& c) {
       dvy_dx += v.y() * grad[k].x(), dvy_dy += v.y() * grad[k].y();
     }
     const double f = c.dt / a2;
-    const StrainIncrement de{dvx_dx * f, dvy_dy * f, 0.5 * (dvx_dy + dvy_dx) * f};
-    p.impl->update(p, de, c.stress[z], c.state[z]);
-    const ZoneStress& s = c.stress[z];
+    zone_de[z] = {dvx_dx * f, dvy_dy * f, 0.5 * (dvx_dy + dvy_dx) * f};
+    zone_area_now[z] = 0.5 * a2, zone_ev[z] = zone_de[z].xx + zone_de[z].yy;
+  }
+  // Nodal mixed discretization of the strain: volumetric increments averaged at the nodes.
+  const bool mixed = c.nodal_mixed;
+  if (mixed)
+    nodal_average<3>(c.zones, zone_area_now, zone_ev, nn, node_sum, node_weight, zone_ev_mixed);
+  // Zones: the constitutive update on the zone's own deviatoric and the mixed volumetric
+  // increment (in the plane: plane strain keeps dezz = 0); a yielding zone's plastic correction
+  // of the in-plane isotropic stress is what it changed beyond the elastic (K + G/3) de_vol
+  // (for tetrahedra: the mean stress beyond K de_vol).
+  bool plastic = false;
+  for (size_t z = 0; z < nz; ++z) {
+    const ZoneProperties& p = c.materials[c.material[z]];
+    zone_dp[z] = 0;
+    if (!p.impl->solid()) continue;
+    StrainIncrement de = zone_de[z];
+    if (mixed) {
+      const double d = 0.5 * (zone_ev_mixed[z] - zone_ev[z]);
+      de.xx += d, de.yy += d;
+    }
+    ZoneStress& s = c.stress[z];
+    const double before = s.xx + s.yy;
+    p.impl->update(p, de, s, c.state[z]);
+    if (mixed && (c.state[z] & (kShearNow | kTensionNow))) {
+      zone_dp[z] = 0.5 * (s.xx + s.yy - before) - (p.bulk + p.shear / 3.0) * (de.xx + de.yy);
+      plastic = true;
+    }
+  }
+  // Nodal mixed discretization of the stress: the plastic isotropic corrections averaged the
+  // same way, so that dilatant flow leaves no zone-by-zone pressure for the mixed strain to miss.
+  if (plastic)
+    nodal_average<3>(c.zones, zone_area_now, zone_dp, nn, node_sum, node_weight, zone_dp_mixed);
+  // Zones: the stress as nodal forces f_i = -A sigma grad N_i.
+  for (size_t z = 0; z < nz; ++z) {
+    if (!c.materials[c.material[z]].impl->solid()) continue;
+    const auto& t = c.zones[z];
+    ZoneStress& s = c.stress[z];
+    if (plastic) {
+      const double d = zone_dp_mixed[z] - zone_dp[z];
+      s.xx += d, s.yy += d;
+    }
+    const std::array<Vec2, 3> grad = zone_gradients(c, t);
     for (int k = 0; k < 3; ++k) {
       const Vec2& g = grad[k];
       const Vec2 fz = 0.5 * Vec2(s.xx * g.x() + s.xy * g.y(), s.xy * g.x() + s.yy * g.y());

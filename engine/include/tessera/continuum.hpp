@@ -10,10 +10,20 @@
 // fixity; zones: three node indices (counter-clockwise), stress (tension positive), plastic
 // state and material. A node's mass is the density times the area of its median-dual cell (a
 // third of each zone around it), the barycentric counterpart of the chapter's Voronoi cell.
+//
+// Nodal mixed discretization (Detournay & Dzik 2006, as in FLAC3D and 3DEC): uniform-strain
+// simplices lock under plastic flow (too few of their modes deform at constant volume), so each
+// cycle the volumetric part of a zone's strain increment is replaced by the mean over its nodes
+// of the area-weighted nodal averages, keeping the zone's own deviatoric part. Under dilatant
+// flow the isotropic part of each yielding zone's plastic stress correction is averaged the
+// same way (else it is a zone-by-zone pressure the averaged strain cannot relieve, which grows
+// without bound); isochoric flow (psi = 0) makes no such correction.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tessera/geometry.hpp"
@@ -40,7 +50,8 @@ struct Continuum {
   double local_damping = 0.8;  // UDEC's local damping; 0 for dynamic runs
   double dt = 0.0, time = 0.0;
   uint64_t cycle = 0;
-  double ratio = 1.0;  // largest unbalanced force over the mean applied force
+  double ratio = 1.0;       // largest unbalanced force over the mean applied force
+  bool nodal_mixed = true;  // nodal mixed discretization (false: plain uniform-strain zones)
 
   size_t node_count() const { return pos.size(); }
   size_t zone_count() const { return zones.size(); }
@@ -79,6 +90,37 @@ double move_nodes(Continuum& c);
 
 // Boundary edges of a mesh (node pairs with the domain on their left), in mesh node numbers.
 std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh);
+
+// The nodal mixed discretization's average of a zone field over simplices of N nodes (3:
+// triangles, 4: tetrahedra): at each node the volume-weighted mean of its zones' `value`, then
+// out[z] = the mean of z's nodes' values. Zones of zero volume (null zones) take no part and
+// keep their own value. Sums run in zone order (deterministic); `node_sum` and `node_weight`
+// are scratch of at least `node_count` entries.
+template <size_t N>
+void nodal_average(std::span<const std::array<uint32_t, N>> zones, std::span<const double> volume,
+                   std::span<const double> value, size_t node_count, std::span<double> node_sum,
+                   std::span<double> node_weight, std::span<double> out) {
+  std::fill_n(node_sum.begin(), node_count, 0.0);
+  std::fill_n(node_weight.begin(), node_count, 0.0);
+  // Scatter: each zone's volume times its value, and its volume, to its nodes.
+  for (size_t z = 0; z < zones.size(); ++z) {
+    if (!(volume[z] > 0)) continue;
+    for (uint32_t n : zones[z]) node_sum[n] += volume[z] * value[z], node_weight[n] += volume[z];
+  }
+  // Nodes: the volume-weighted mean of the zones around each.
+  for (size_t n = 0; n < node_count; ++n)
+    if (node_weight[n] > 0) node_sum[n] /= node_weight[n];
+  // Gather: each zone takes the plain mean of its nodes' averages.
+  for (size_t z = 0; z < zones.size(); ++z) {
+    if (!(volume[z] > 0)) {
+      out[z] = value[z];
+      continue;
+    }
+    double sum = 0;
+    for (uint32_t n : zones[z]) sum += node_sum[n];
+    out[z] = sum / static_cast<double>(N);
+  }
+}
 
 template <typename Pred>
 void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_node,
