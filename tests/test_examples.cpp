@@ -14,6 +14,7 @@
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -37,6 +38,26 @@ Run run_example(const QString& name, const QStringList& extra, QTemporaryDir& di
   r.out = p.readAllStandardOutput();
   r.err = p.readAllStandardError();
   return r;
+}
+
+// Runs `tessera --batch` on a script file into a fresh folder beside it.
+Run run_script(const QString& path, int timeout_ms = 600000) {
+  QProcess p;
+  Run r;
+  r.dir = path + "_out";
+  p.start(TESSERA_EXE, QStringList{"--batch", path, "--out", r.dir, "--quiet"});
+  p.waitForFinished(timeout_ms);
+  r.exit_code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+  r.out = p.readAllStandardOutput();
+  r.err = p.readAllStandardError();
+  return r;
+}
+
+// Writes text (bytes as they are) to a file in dir; returns its path.
+QString write_file(QTemporaryDir& dir, const QString& name, const std::string& text) {
+  const QString path = dir.filePath(name);
+  std::ofstream(path.toStdString(), std::ios::binary) << text;
+  return path;
 }
 
 // A figure a script wrote: the size asked for, and a drawing, not a blank page.
@@ -80,7 +101,7 @@ std::map<std::string, std::vector<double>> read_history(const QString& dir) {
   while (std::getline(in, line)) {
     std::istringstream s(line);
     for (size_t c = 0; std::getline(s, cell, ',') && c < heads.size(); ++c)
-      cols[heads[c]].push_back(std::stod(cell));
+      cols[heads[c]].push_back(cell.empty() ? std::nan("") : std::stod(cell));
   }
   return cols;
 }
@@ -208,6 +229,101 @@ class TestExamples : public QObject {
     QVERIFY(bottom > 0.3);
     QVERIFY(std::abs(moved - pivoted) < 0.02);
   }
+  // Bad input found by independent checks (issue 13): each script ends with a message that
+  // starts with its file and line, exit status 1 and its results written; never a signal.
+  void badInputCorpusEndsWithFileAndLine() {
+    const std::string base =
+        "round 0.01\nmaterial define rock density=2000\n"
+        "joint define j kn=1e9 ks=1e9 friction=30\njoint assign j\n";
+    const std::string base3 =
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2000\n"
+        "joint define j kn=1e9 ks=1e9 friction=30\njoint assign j\n";
+    const std::vector<std::pair<std::string, std::string>> corpus = {
+        {"nesting", "set x = " + std::string(50000, '(') + "1" + std::string(50000, ')') + "\n"},
+        {"signs", "set x = " + std::string(50000, '-') + "1\n"},
+        {"folder", "call .\n"},
+        {"overlap_made", base +
+                             "block 0,0 1,0 1,1 0,1 material=rock\nblock 0.5,0 1.5,0 1.5,1 0.5,1 "
+                             "material=rock\nstep 1\n"},
+        {"duplicate", base + "block 0,0 1,0 1,1 0,1 material=rock\n"
+                             "block 0,0 1,0 1,1 0,1 material=rock\nstep 1\n"},
+        {"overlap_too_great",
+         "round 0.01\nmaterial define rock density=2000\njoint define j kn=1e5 ks=1e5 "
+         "friction=40\njoint assign j\nblock -5,-5 5,-5 5,0 -5,0 material=rock\nfix block=1\n"
+         "block 0,0 1,0 1,1 0,1 material=rock\ngravity 0 -10\nstep 20000\n"},
+        {"no_point", base + "block 0,0 1,0 1,1 0,1 material=rock\nhistory ydisp at=5,5\n"},
+        {"join_apart", base3 + "block box 0,0,0 1,1,1 material=rock\n"
+                               "block box 3,0,0 4,1,1 material=rock\njoin block=1,2\n"},
+        {"bad_state", "restore nonsense.state\n"},
+        {"diverges", base + "block 0,-1 2,-1 2,0 0,0 material=rock\nfix block=1\n"
+                            "block 0,0 1,0 1,1 0,1 material=rock\ntimestep fixed 1\n"
+                            "gravity 0 -10\nstep 100\n"},
+        {"unknown_bom", "\xEF\xBB\xBFstpe 10\n"},
+        {"bad_title", "title caf\xE9\nround -1\n"},
+    };
+    // A state file whose block index was overwritten.
+    write_file(dir_, "nonsense.state", std::string("TESSERA2") + std::string(64, '\xff'));
+    for (const auto& [name, text] : corpus) {
+      const QString path = write_file(dir_, QString::fromStdString(name) + ".tess", text);
+      const Run r = run_script(path, 120000);
+      const QString last = r.err.trimmed().split('\n').last();
+      qInfo("%s: exit %d, %s", name.c_str(), r.exit_code, qPrintable(last.left(160)));
+      QVERIFY2(r.exit_code == 1, name.c_str());
+      QVERIFY2(QRegularExpression("^" + QRegularExpression::escape(path) + ":\\d+: ")
+                   .match(last)
+                   .hasMatch(),
+               name.c_str());
+      QVERIFY2(
+          QFile::exists(r.dir + "/summary.json") && QFileInfo(r.dir + "/summary.json").size() > 0,
+          name.c_str());
+    }
+  }
+
+  // Ctrl-C or SIGTERM in a batch run: it stops at a cycle boundary, writes every result and a
+  // state file that 'restore' continues from, says where, and exits 128 + the signal.
+  void signalStopsTheRunWithItsResults() {
+    const std::string text =
+        "round 0.01\nmaterial define rock density=2000\n"
+        "joint define j kn=1e9 ks=1e9 friction=30\njoint assign j\n"
+        "block 0,-1 2,-1 2,0 0,0 material=rock\nfix block=1\n"
+        "block 0,0 1,0 1,1 0,1 material=rock\ngravity 0 -10\nhistory ratio\n"
+        "history interval 1000\nvtk\nstep 2000000000\n";
+    for (const int sig : {SIGINT, SIGTERM}) {
+      const QString path = write_file(dir_, QString("long_%1.tess").arg(sig), text);
+      QProcess p;
+      const QString out = path + "_out";
+      p.start(TESSERA_EXE, QStringList{"--batch", path, "--out", out});
+      QVERIFY(p.waitForStarted());
+      // Wait until it is past 'vtk' (its folder exists: the handlers are in place), then signal.
+      QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(out + "/vtk"), 60000);
+      QTest::qWait(300);
+      ::kill(static_cast<pid_t>(p.processId()), sig);
+      QVERIFY(p.waitForFinished(120000));
+      QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+      QCOMPARE(p.exitCode(), 128 + sig);
+      const QString err = p.readAllStandardError();
+      qInfo("%s", qPrintable(err.trimmed()));
+      QVERIFY(err.contains(sig == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM"));
+      QVERIFY(QFileInfo(out + "/summary.json").size() > 0);
+      QVERIFY(QFile::exists(out + "/history.csv"));
+      QVERIFY(QFile::exists(out + "/vtk/blocks.pvd"));
+      QVERIFY(QFile::exists(out + "/interrupted.state"));
+      // The state goes on from where it stopped.
+      const QString more =
+          write_file(dir_, QString("more_%1.tess").arg(sig),
+                     "restore " + (out + "/interrupted.state").toStdString() + "\nstep 10\n");
+      const Run r = run_script(more);
+      QCOMPARE(r.exit_code, 0);
+      const auto summary = QJsonDocument::fromJson([&] {
+                             QFile f(r.dir + "/summary.json");
+                             f.open(QIODevice::ReadOnly);
+                             return f.readAll();
+                           }())
+                               .object();
+      QVERIFY(summary["cycles"].toDouble() > 10);
+    }
+  }
+
   void tunnelStandsThenIsExcavated() {
     const Run r = run_example("tunnel_jointed", {}, dir_);
     QCOMPARE(r.exit_code, 0);

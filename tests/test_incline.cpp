@@ -86,6 +86,51 @@ class TestIncline : public QObject {
     qInfo("slid at psi %.2f degrees; W sin(psi) = c L at %.2f", slid_at, limit);
     QVERIFY(slid_at > limit - 0.25 && slid_at < limit + 0.5);
   }
+  // A block near its friction limit on a two-spring base: W sin(psi) h/2 tilts the normal
+  // forces to the toe (N/2 + T h/2s) and heel (N/2 - T h/2s); equal shear shares would put the
+  // heel 6.5 times over its limit at psi 40, phi 40.1, so it slips while gravity comes on and
+  // the toe carries the rest, within 0.4% of its own limit. Settled, it stands undamped.
+  void nearLimitBlockStandsOnUnequalContacts_data() {
+    QTest::addColumn<double>("kn");
+    QTest::newRow("kn 1e9") << 1e9;
+    QTest::newRow("kn 1e7") << 1e7;
+  }
+  void nearLimitBlockStandsOnUnequalContacts() {
+    QFETCH(double, kn);
+    const double psi = 40, phi = 40.1, d = 0.005, g = 9.81, W = 2500 * g;
+    const double N = W * std::cos(psi * kDeg), T = W * std::sin(psi * kDeg), s = 1 - 2 * d;
+    const double mu = std::tan(phi * kDeg);
+    ScriptRun r;
+    r.run("round 0.005\nmaterial define rock density=2500\njoint define j kn=" +
+          std::to_string(kn) + " ks=" + std::to_string(kn) + " friction=" + std::to_string(phi) +
+          "\njoint assign j\nblock -2,-1 3,-1 3,0 -2,0 material=rock\nfix block=1\n"
+          "block 0,0 1,0 1,1 0,1 material=rock\ngravity " +
+          std::to_string(-g * std::sin(psi * kDeg)) + " " +
+          std::to_string(-g * std::cos(psi * kDeg)) + "\ndamping local\nsolve ratio=1e-6\n");
+    Model& m = r.model();
+    const Contacts& C = m.contacts;
+    QCOMPARE(C.size(), size_t(2));
+    const size_t toe = C.point[0].x() < C.point[1].x() ? 0 : 1, heel = 1 - toe;
+    QVERIFY(std::abs(C.fn[toe] - (N / 2 + T * 0.5 / s)) < 5e-3 * N);
+    QVERIFY(std::abs(C.fn[heel] - (N / 2 - T * 0.5 / s)) < 5e-3 * N);
+    QVERIFY(std::abs(std::abs(C.fs[toe] + C.fs[heel]) - T) < 1e-4 * T);
+    for (size_t i : {toe, heel}) {
+      QVERIFY(std::abs(C.length[i] - s / 2) < 1e-5);
+      QVERIFY(std::abs(C.fs[i]) <= mu * C.fn[i] * (1 + 1e-9));
+      // The incremental normal force has not drifted from kn L overlap (5.6e-5 at kn 1e7, where
+      // the block turns 3.3 mrad and the heel's arc rolls).
+      QVERIFY(std::abs(C.fn[i] - kn * C.length[i] * -C.gap[i]) < 1e-4 * C.fn[i]);
+    }
+    QVERIFY(std::abs(C.fs[toe]) > 0.99 * mu * C.fn[toe]);
+    QVERIFY(std::abs(C.fs[heel]) < 0.25 * T / 2);
+    const double x0 = m.blocks.x[1],
+                 settle_bound = 20 * 2 * mu * g * std::cos(psi * kDeg) * 2500 / (kn * s);
+    qInfo("kn %.0e: toe %.1f N (%.2f%% of its limit), heel %.1f N, settle slip %.3g m", kn,
+          C.fn[toe], 100 * std::abs(C.fs[toe]) / (mu * C.fn[toe]), C.fn[heel], x0 - 0.5);
+    QVERIFY(std::abs(x0 - 0.5) < settle_bound);
+    r.run("damping none\nstep 20000");
+    QVERIFY(std::abs(m.blocks.x[1] - x0) < 0.01 * T / (kn * s));
+  }
 };
 
 QTEST_APPLESS_MAIN(TestIncline)

@@ -167,16 +167,12 @@ constexpr double kOverlapLimit = 0.5;
 [[noreturn]] void throw_overlap(const Model& m, uint32_t i) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
-  const auto name = [&](uint32_t b) {
-    std::string s = "block " + std::to_string(B.id[b]);
-    if (B.group[b] >= 0) s += " (group " + m.groups[static_cast<size_t>(B.group[b])] + ")";
-    return s;
-  };
   std::ostringstream msg;
   const uint32_t a = C.a[i], b = C.b[i];
-  msg << "contact overlap too great at cycle " << m.cycle << ": " << name(a) << " and " << name(b)
-      << " overlap by " << -C.gap[i] << " m near x=" << C.point[i].x() << ", y=" << C.point[i].y()
-      << " (more than " << kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])
+  msg << "contact overlap too great at cycle " << m.cycle << ": " << m.block_label(a) << " and "
+      << m.block_label(b) << " overlap by " << -C.gap[i] << " m near x=" << C.point[i].x()
+      << ", y=" << C.point[i].y() << " (more than "
+      << kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])
       << " m, an eighth of the smaller block's size; corner " << C.corner[i] - B.vert_begin[a] + 1
       << " of block " << B.id[a] << " against the "
       << (C.kind[i] == kCornerEdge ? "edge from vertex " : "corner ")

@@ -56,12 +56,6 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase3(const std::vector<Box3>&
   return pairs;
 }
 
-// A block's group name, for messages.
-std::string group_of(const Model& m, uint32_t b) {
-  const int g = m.blocks3.group[b];
-  return g >= 0 ? m.groups[static_cast<size_t>(g)] : std::string("(none)");
-}
-
 inline double sgn(double v) {
   return (v > 0.0) - (v < 0.0);
 }
@@ -224,10 +218,8 @@ void detect_contacts3(Model& m) {
                                         : -1;
       const int joint = m.joint_for(lo, hi, c.tag);
       if (joint < 0)
-        throw ModelError("no joint properties apply to the contact between block " +
-                         std::to_string(B.id[lo]) + " (group " + group_of(m, lo) + ") and block " +
-                         std::to_string(B.id[hi]) + " (group " + group_of(m, hi) +
-                         "): use 'joint assign'");
+        throw ModelError("no joint properties apply to the contact between " + m.block_label(lo) +
+                         " and " + m.block_label(hi) + ": use 'joint assign'");
       c.joint = static_cast<uint32_t>(joint);
       c.face_a = B.face_begin[lo], c.face_b = B.face_begin[hi];
       next.push_back(std::move(c));

@@ -185,14 +185,9 @@ void detect_contacts(Model& m) {
       }
       const int joint = m.joint_for(f.owner, f.other, tag);
       if (joint < 0) {
-        const auto group_name = [&](uint32_t b) {
-          return B.group[b] >= 0 ? m.groups[static_cast<size_t>(B.group[b])]
-                                 : std::string("(none)");
-        };
-        throw ModelError("no joint properties apply to the contact between block " +
-                         std::to_string(B.id[f.owner]) + " (group " + group_name(f.owner) +
-                         ") and block " + std::to_string(B.id[f.other]) + " (group " +
-                         group_name(f.other) + "): use 'joint assign'");
+        throw ModelError("no joint properties apply to the contact between " +
+                         m.block_label(f.owner) + " and " + m.block_label(f.other) +
+                         ": use 'joint assign'");
       }
       next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint), tag);
       const JointProperties& jp = m.joints[static_cast<size_t>(joint)];

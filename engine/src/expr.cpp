@@ -25,7 +25,9 @@ class Parser {
 
  private:
   [[noreturn]] void fail(const std::string& why) const {
-    throw ExprError("cannot read the number '" + s_ + "': " + why);
+    // A long expression is quoted by its start only.
+    const std::string shown = s_.size() > 80 ? s_.substr(0, 60) + "..." : s_;
+    throw ExprError("cannot read the number '" + shown + "': " + why);
   }
   void skip() {
     while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_]))) ++pos_;

@@ -36,6 +36,12 @@ int Model::joint_for(uint32_t a, uint32_t b, int tag) const {
   return -1;
 }
 
+std::string Model::block_label(size_t b) const {
+  const int g = block_group(b);
+  return "block " + std::to_string(dim == 3 ? blocks3.id[b] : blocks.id[b]) + " (group " +
+         (g >= 0 ? groups[static_cast<size_t>(g)] : std::string("(none)")) + ")";
+}
+
 double Model::tolerance() const {
   return settings.contact_tolerance > 0.0 ? settings.contact_tolerance : settings.rounding;
 }

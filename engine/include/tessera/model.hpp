@@ -98,6 +98,8 @@ struct Model {
   int joint_for(uint32_t a, uint32_t b, int tag = -1) const;
   size_t block_count() const { return dim == 3 ? blocks3.size() : blocks.size(); }
   int block_group(size_t b) const { return dim == 3 ? blocks3.group[b] : blocks.group[b]; }
+  // "block 12 (group rock)", for messages ("(group (none))" without one).
+  std::string block_label(size_t b) const;
   // Contact tolerance in force: the user's, or the rounding length.
   double tolerance() const;
   // Gaps this close to zero are round-off of the coordinates, not openings (see joint_law.hpp).
