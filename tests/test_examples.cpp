@@ -441,6 +441,19 @@ class TestExamples : public QObject {
     QVERIFY(std::abs(d - 0.5 * 1.5889 * 1.0754 * 1.0754) < 0.02 * d);
     QVERIFY(std::abs(plunge - 42.46) < 0.5);
     QVERIFY(std::abs(trend - 179.84) < 0.5);
+    // Coloured by z displacement: the wedge (down 0.6 m) at the blue end of the ramp, the rock
+    // that stays at the red end.
+    const QString fig = r.dir + "/wedge_zdisp.png";
+    check_figure(fig, QSize(1200, 900));
+    const QImage img(fig);
+    long blue = 0, red = 0, samples = 0;
+    for (int y = 0; y < img.height(); y += 4)
+      for (int x = 0; x < img.width() * 3 / 4; x += 4, ++samples) {
+        const QColor c = img.pixelColor(x, y);
+        blue += c.blue() > c.red() + 80, red += c.red() > c.blue() + 80;
+      }
+    qInfo("zdisp figure: %ld blue and %ld red of %ld samples", blue, red, samples);
+    QVERIFY(blue > samples / 100 && red > samples / 10);
   }
   void everyExampleIsChecked() {
     const QStringList checked{"block_on_incline.tess",  "brick_wall.tess",
