@@ -282,9 +282,9 @@ class TestBlocks3d : public QObject {
         QVERIFY(std::abs(t3 - t2) < 0.05 * t2);
         QVERIFY(std::abs(t3 - t) < 0.05 * t);
       } else {
-        // Standing, undamped: the sudden load sets the squat block rocking on its two base
-        // contacts by a few milliradians (it grows slowly: see the notes of issue 13), far
-        // from the toppling block's 0.2 rad.
+        // Standing, undamped: gravity switched on at once overshoots to twice the static
+        // moment, which lifts the heel (N/2 - 2 T h/2s < 0 here), and with no damping the block
+        // goes on rocking by a few milliradians, far from the toppling block's 0.2 rad.
         QVERIFY(tilt2() < 1e-2);
         QVERIFY(tilt3() < 1e-2);
       }
@@ -366,9 +366,9 @@ class TestBlocks3d : public QObject {
                      (J.local_vertex[J.vert_begin[1]] - J.local_vertex[J.vert_begin[2]]).norm()) <
             1e-9);
       } else {
-        // Standing, undamped: the sudden load sets the squat block rocking on its two base
-        // contacts by a few milliradians (it grows slowly: see the notes of issue 13), far
-        // from the toppling block's 0.2 rad.
+        // Standing, undamped: gravity switched on at once overshoots to twice the static
+        // moment, which lifts the heel (N/2 - 2 T h/2s < 0 here), and with no damping the block
+        // goes on rocking by a few milliradians, far from the toppling block's 0.2 rad.
         QVERIFY(tilt2() < 1e-2);
         QVERIFY(tilt3() < 1e-2);
       }
