@@ -86,6 +86,29 @@ class TestIncline : public QObject {
     qInfo("slid at psi %.2f degrees; W sin(psi) = c L at %.2f", slid_at, limit);
     QVERIFY(slid_at > limit - 0.25 && slid_at < limit + 0.5);
   }
+  // Only joints shut when the model is made are bonded: a block 2 mm above its base (within the
+  // contact tolerance of 5 mm) is not glued across the gap; one set on it is.
+  void onlyShutJointsAreBonded() {
+    for (const double gap : {0.0, 0.002}) {
+      ScriptRun r;
+      const std::string y0 = std::to_string(gap), y1 = std::to_string(gap + 1);
+      r.run(
+          "round 0.005\nmaterial define rock density=2500\n"
+          "joint define j kn=1e10 ks=1e10 friction=30 cohesion=1e6 tension=1e6\njoint assign j\n"
+          "block -2,-1 3,-1 3,0 -2,0 material=rock\nfix block=1\n"
+          "block 0," +
+          y0 + " 1," + y0 + " 1," + y1 + " 0," + y1 + " material=rock\ndamping none\nstep 200");
+      const Model& m = r.model();
+      int bonded = 0;
+      for (size_t i = 0; i < m.contacts.size(); ++i) bonded += (m.contacts.flags[i] & kBonded) != 0;
+      qInfo("gap %.3f m: %d bonded contacts, block moved %.3g m", gap, bonded,
+            m.blocks.y[1] - (gap + 0.5));
+      QCOMPARE(bonded, gap > 0 ? 0 : 2);
+      // Without gravity nothing moves it: no force across the open gap.
+      QVERIFY(std::abs(m.blocks.y[1] - (gap + 0.5)) < 1e-12);
+    }
+  }
+
   // A block near its friction limit on a two-spring base: W sin(psi) h/2 tilts the normal
   // forces to the toe (N/2 + T h/2s) and heel (N/2 - T h/2s); equal shear shares would put the
   // heel 6.5 times over its limit at psi 40, phi 40.1, so it slips while gravity comes on and

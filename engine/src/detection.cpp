@@ -191,8 +191,10 @@ void detect_contacts(Model& m) {
       }
       next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint), tag);
       const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
-      // Joints present when the model is assembled are bonded (cohesion and tension act).
-      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0)) next.flags.back() |= kBonded;
+      // Joints shut when the model is assembled are bonded (cohesion and tension act); a
+      // contact open by more than round-off is a gap, not a joint.
+      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && f.hit.gap <= m.bond_gap())
+        next.flags.back() |= kBonded;
     }
     const size_t i = next.size() - 1;
     next.kind[i] = f.hit.kind, next.feature[i] = f.hit.feature, next.gap[i] = f.hit.gap;

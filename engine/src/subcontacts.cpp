@@ -181,7 +181,7 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
     }
     if (match < 0) {
       // A new sub-contact of a contact bonded when the model was made is bonded too.
-      if (m.cycle == 0) {
+      if (m.cycle == 0 && s.gap <= m.bond_gap()) {
         const JointProperties& jp = m.joints[c.joint];
         if (jp.cohesion > 0.0 || jp.tension > 0.0) s.flags |= kBonded;
       }

@@ -104,6 +104,8 @@ struct Model {
   double tolerance() const;
   // Gaps this close to zero are round-off of the coordinates, not openings (see joint_law.hpp).
   double roundoff_gap() const { return 1e-9 * tolerance(); }
+  // Contacts found at assembly this close (or closer) are shut joints and may be bonded.
+  double bond_gap() const { return 1e-3 * tolerance(); }
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
   void touch() { dt_dirty = true, detection_due = true; }
 };
