@@ -447,9 +447,9 @@ class TestExamples : public QObject {
     check_figure(fig, QSize(1200, 900));
     const QImage img(fig);
     long blue = 0, red = 0, samples = 0;
-    for (int y = 0; y < img.height(); y += 4)
-      for (int x = 0; x < img.width() * 3 / 4; x += 4, ++samples) {
-        const QColor c = img.pixelColor(x, y);
+    for (int py = 0; py < img.height(); py += 4)
+      for (int px = 0; px < img.width() * 3 / 4; px += 4, ++samples) {
+        const QColor c = img.pixelColor(px, py);
         blue += c.blue() > c.red() + 80, red += c.red() > c.blue() + 80;
       }
     qInfo("zdisp figure: %ld blue and %ld red of %ld samples", blue, red, samples);
