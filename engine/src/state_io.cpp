@@ -37,6 +37,8 @@ class Writer {
                  static_cast<std::streamsize>(v.size() * sizeof(T)));
     }
   }
+  // A count of records that follow (each at least 8 bytes in the file).
+  void items(uint64_t& n) { pod(n); }
   void str(const std::string& s) {
     pod<uint64_t>(s.size());
     out_.write(s.data(), static_cast<std::streamsize>(s.size()));
@@ -72,6 +74,12 @@ class Reader {
       in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
       check();
     }
+  }
+  // A count of records that follow, each at least 8 bytes in the file: no more than it holds.
+  void items(uint64_t& n) {
+    pod(n);
+    if (n > left_ / 8)
+      fail("a count of " + std::to_string(n) + " records is more than the rest of the file holds");
   }
   void str(std::string& s) {
     uint64_t n = 0;
@@ -122,7 +130,7 @@ void fields(IO& io, auto& m) {
   io.vec(C.shear_disp), io.vec(C.closure);
   io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
-  io.pod(count);
+  io.items(count);
   m.materials.resize(count);
   for (auto& mat : m.materials) {
     io.str(mat.name), io.pod(mat.density);
@@ -131,7 +139,7 @@ void fields(IO& io, auto& m) {
     io.pod(z.friction), io.pod(z.cohesion), io.pod(z.tension), io.pod(z.dilation);
   }
   count = m.joints.size();
-  io.pod(count);
+  io.items(count);
   m.joints.resize(count);
   for (auto& j : m.joints) {
     io.str(j.name), io.str(j.law), io.pod(j.kn), io.pod(j.ks), io.pod(j.friction);
@@ -139,17 +147,17 @@ void fields(IO& io, auto& m) {
   }
   io.vec(m.joint_table);
   count = m.groups.size();
-  io.pod(count);
+  io.items(count);
   m.groups.resize(count);
   for (auto& g : m.groups) io.str(g);
   count = m.joint_tags.size();
-  io.pod(count);
+  io.items(count);
   m.joint_tags.resize(count);
   for (auto& t : m.joint_tags) io.str(t);
   auto& H = m.histories;
   io.pod(H.interval);
   count = H.series.size();
-  io.pod(count);
+  io.items(count);
   H.series.resize(count);
   for (auto& s : H.series) io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label);
   io.vec(H.cycles), io.vec(H.values);
@@ -175,7 +183,7 @@ void fields(IO& io, auto& m) {
   io.vec(B3.face_tag), io.vec(B3.dir_begin), io.vec(B3.local_dir), io.vec(B3.world_dir);
   io.vec(B3.group), io.vec(B3.material), io.vec(B3.id), io.vec(B3.master);
   count = m.contacts3.size();
-  io.pod(count);
+  io.items(count);
   m.contacts3.resize(count);
   for (auto& c : m.contacts3) {
     io.pod(c.a), io.pod(c.b), io.pod(c.joint), io.pod(c.tag), io.pod(c.kind), io.pod(c.ia);
