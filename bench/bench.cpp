@@ -5,11 +5,16 @@
 #include <chrono>
 #include <iostream>
 
+#include "tessera/common_plane.hpp"
+#include "tessera/detection.hpp"
+#include "tessera/detection3.hpp"
 #include "tessera/generators.hpp"
 #include "tessera/generators3.hpp"
+#include "tessera/interfaces.hpp"
 #include "tessera/parallel.hpp"
-#include "tessera/solver.hpp"
-#include "tessera/solver3.hpp"
+#include "tessera/step.hpp"
+#include "tessera/subcontacts.hpp"
+#include "tessera/timestep.hpp"
 
 using namespace tessera;
 
@@ -77,8 +82,8 @@ int main(int argc, char** argv) {
   set_thread_count(threads);
   Model m = scene == "wall3d" ? wall3d_scene(cols, rows) : wall_scene(cols, rows);
   Profile profile;
-  run_options().profile = &profile;
-  run_options().validate = false;
+  m.options.profile = &profile;
+  m.options.validate = false;
   prepare(m);
   if (m.dim == 3)
     detect_contacts3(m);

@@ -11,15 +11,6 @@
 
 namespace tessera::ui {
 
-namespace {
-// Roughly the memory a copy of the model takes (its large arrays).
-double approx_bytes(const Model& m) {
-  return 400.0 * double(m.blocks.size()) + 150.0 * double(m.blocks.local_vertex.size()) +
-         250.0 * double(m.contacts.size()) + 120.0 * double(m.continuum.node_count()) +
-         100.0 * double(m.continuum.zone_count()) + 8.0 * double(m.histories.values.size());
-}
-}  // namespace
-
 SolverWorker::SolverWorker() {
   openFile({}, QDir::temp().filePath("tessera_out"));
 }
@@ -127,9 +118,9 @@ void SolverWorker::execute(const QString& line) {
     }
     undo_.push_back(std::move(before));
     double bytes = 0;
-    for (const auto& p : undo_) bytes += approx_bytes(p->model);
+    for (const auto& p : undo_) bytes += p->model.approx_bytes();
     while (undo_.size() > kUndoDepth || (undo_.size() > 1 && bytes > kUndoBytes)) {
-      bytes -= approx_bytes(undo_.front()->model);
+      bytes -= undo_.front()->model.approx_bytes();
       undo_.pop_front();
     }
     emit undoDepth(static_cast<int>(undo_.size()));

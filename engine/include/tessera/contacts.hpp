@@ -27,19 +27,11 @@
 #include <vector>
 
 #include "tessera/geometry.hpp"
+#include "tessera/joint_law.hpp"
 
 namespace tessera {
 
 enum ContactKind : uint8_t { kCornerEdge = 0, kCornerCorner = 1, kLost = 2 };
-enum ContactFlag : uint8_t {
-  kBonded = 1,    // cohesion and tensile strength still intact
-  kSlipping = 2,  // at the Coulomb limit this cycle
-  kTouching = 4,  // overlap or bond: carries force and takes a share of the interface length
-  kBroken = 8,    // was bonded and failed, for output
-  kNotch = 16,    // a corner touching two faces of a concave block: each contact keeps its face
-  kPreload = 32,  // fs holds an in-situ shear stress, made a force at the next law call
-};
-
 struct Contacts {
   // Identity: global vertex `corner` of block `a` against block `b`; `slot` 1 for the second face
   // of a notch the corner sits in.

@@ -18,6 +18,16 @@ namespace tessera {
 
 class JointLaw;
 
+// A contact's state flags (2D contacts and 3D sub-contacts).
+enum ContactFlag : uint8_t {
+  kBonded = 1,    // cohesion and tensile strength still intact
+  kSlipping = 2,  // at the Coulomb limit this cycle
+  kTouching = 4,  // overlap or bond: carries force and takes a share of the interface length
+  kBroken = 8,    // was bonded and failed, for output
+  kNotch = 16,    // a corner touching two faces of a concave block: each contact keeps its face
+  kPreload = 32,  // fs holds an in-situ shear stress, made a force at the next law call
+};
+
 // A named set of joint properties, assigned to contacts between groups.
 struct JointProperties {
   std::string name;
@@ -63,6 +73,12 @@ class JointLaw {
 // from the arithmetic of its coordinates) is neither in tension nor pressed.
 inline double without_roundoff(double overlap, double roundoff) {
   return overlap <= roundoff && overlap >= -roundoff ? 0.0 : overlap;
+}
+
+// Open, unbonded and open before (normal displacement un <= 0): the law has nothing to do but
+// remember the opening.
+inline bool stays_open(double un, double fn, uint8_t flags) {
+  return un <= 0.0 && fn == 0.0 && !(flags & (kBonded | kTouching));
 }
 
 // The law registered under a name, or nullptr.

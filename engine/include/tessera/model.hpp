@@ -1,7 +1,7 @@
 // The whole state of a model, 2D or 3D: blocks, contacts, properties, settings, clock.
 //
-// Everything needed to continue a run bit for bit lives here and is written by save(); the
-// cycle (solver.hpp) is a set of free functions over this state.
+// Everything needed to continue a run bit for bit lives here and is written by save(), except
+// the run options; the cycle (step.hpp) is a set of free functions over this state.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +15,7 @@
 #include "tessera/continuum.hpp"
 #include "tessera/history.hpp"
 #include "tessera/joint_law.hpp"
+#include "tessera/run_options.hpp"
 
 namespace tessera {
 
@@ -86,6 +87,9 @@ struct Model {
   bool detection_due = true;
   uint64_t detection_passes = 0;
 
+  // How this model runs (validation, profile): not saved, copied with the model.
+  RunOptions options = default_run_options();
+
   // Derived, rebuilt after detection and after restore: contacts touching each block,
   // as (contact index * 2 + side) with side 0 for a, 1 for b (2D or 3D contacts).
   std::vector<uint32_t> block_contact_begin, block_contacts;
@@ -108,6 +112,8 @@ struct Model {
   double bond_gap() const { return 1e-3 * tolerance(); }
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
   void touch() { dt_dirty = true, detection_due = true; }
+  // Roughly the memory the model takes (its large arrays, 2D and 3D), in bytes.
+  double approx_bytes() const;
 };
 
 }  // namespace tessera

@@ -17,7 +17,7 @@
 #include "tessera/cutting3.hpp"
 #include "tessera/figure.hpp"
 #include "tessera/model.hpp"
-#include "tessera/solver.hpp"
+#include "tessera/step.hpp"
 #include "tessera/vtk_output.hpp"
 
 namespace tessera {

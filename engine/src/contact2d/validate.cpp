@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "tessera/solver.hpp"
+#include "tessera/detection.hpp"
 
 namespace tessera {
 
@@ -13,7 +13,7 @@ void require(bool ok, const std::string& what) {
 }
 }  // namespace
 
-void validate(const Model& m) {
+void validate2d(const Model& m) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   const size_t n = B.size();

@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <utility>
 
+#include "tessera/detection.hpp"
+#include "tessera/interfaces.hpp"
 #include "tessera/model.hpp"
-#include "tessera/solver.hpp"
+#include "tessera/step.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 

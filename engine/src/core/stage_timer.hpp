@@ -3,23 +3,25 @@
 
 #include <chrono>
 
-#include "tessera/solver.hpp"
+#include "tessera/run_options.hpp"
 
 namespace tessera {
 
-// Times one stage into the profile, if any.
 class StageTimer {
  public:
-  explicit StageTimer(int stage) : stage_(stage), t0_(std::chrono::steady_clock::now()) {}
+  StageTimer(const RunOptions& run, int stage) : profile_(run.profile), stage_(stage) {
+    if (profile_) t0_ = std::chrono::steady_clock::now();
+  }
   ~StageTimer() {
-    if (Profile* p = run_options().profile)
-      p->seconds[static_cast<size_t>(stage_)] +=
+    if (profile_)
+      profile_->seconds[static_cast<size_t>(stage_)] +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
   }
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
 
  private:
+  Profile* profile_;
   int stage_;
   std::chrono::steady_clock::time_point t0_;
 };

@@ -1,10 +1,8 @@
-// The explicit cycle of 3D rigid blocks (chapter 5.3): common planes, sub-contacts, joint law,
-// resultants, damping and motion. solver.hpp's prepare and cycle call these for 3D models.
+// The common plane of two 3D blocks (chapter 5.3.1, contact3d/common_plane.cpp): candidates
+// from a face of either block or an edge of each, and the gap each gives.
 #pragma once
 
-#include <string>
-
-#include "tessera/model.hpp"
+#include "tessera/blocks3.hpp"
 
 namespace tessera {
 
@@ -24,18 +22,5 @@ PlaneFit evaluate_plane(const Blocks3& B, uint32_t a, uint32_t b, uint8_t kind, 
                         uint32_t ib);
 // The best of every candidate for blocks a and b.
 PlaneFit best_plane(const Blocks3& B, uint32_t a, uint32_t b);
-// Moves a contact's common plane with its blocks, rebuilds its sub-contacts and runs the joint
-// law on each (forces on a; b takes the opposite).
-void update_contact3(const Model& m, Contact3& c);
-
-double compute_timestep3(const Model& m);
-void prepare3(Model& m);
-void cycle3(Model& m);
-// Detection pass: bounding boxes swept along x, the common plane of each close pair; keeps the
-// state of contacts that persist.
-void detect_contacts3(Model& m);
-// First pair of blocks overlapping beyond the tolerance, as a message; empty if none.
-std::string find_overlap3(const Model& m);
-double kinetic_energy3(const Model& m);
 
 }  // namespace tessera

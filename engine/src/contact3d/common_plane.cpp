@@ -1,7 +1,10 @@
 // The common plane of two convex blocks: the separating-axis candidates and the best of them.
+#include "tessera/common_plane.hpp"
+
 #include <cmath>
 
-#include "tessera/solver3.hpp"
+#include "tessera/detection3.hpp"
+#include "tessera/subcontacts.hpp"
 
 namespace tessera {
 

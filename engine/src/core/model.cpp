@@ -47,3 +47,17 @@ double Model::tolerance() const {
 }
 
 }  // namespace tessera
+
+namespace tessera {
+
+double Model::approx_bytes() const {
+  double subs = 0.0;
+  for (const Contact3& c : contacts3) subs += static_cast<double>(c.subs.size());
+  return 400.0 * double(blocks.size()) + 150.0 * double(blocks.local_vertex.size()) +
+         250.0 * double(contacts.size()) + 700.0 * double(blocks3.size()) +
+         120.0 * double(blocks3.local_vertex.size()) + 200.0 * double(blocks3.face_vert.size()) +
+         250.0 * double(contacts3.size()) + 130.0 * subs + 120.0 * double(continuum.node_count()) +
+         100.0 * double(continuum.zone_count()) + 8.0 * double(histories.values.size());
+}
+
+}  // namespace tessera

@@ -31,8 +31,11 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 #include <cmath>
 #include <numbers>
 
+#include "tessera/detection.hpp"
+#include "tessera/interfaces.hpp"
 #include "tessera/random.hpp"
-#include "tessera/solver.hpp"
+#include "tessera/step.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 

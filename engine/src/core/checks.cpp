@@ -5,8 +5,13 @@
 #include <numbers>
 #include <numeric>
 
-#include "tessera/solver.hpp"
-#include "tessera/solver3.hpp"
+#include "tessera/common_plane.hpp"
+#include "tessera/detection.hpp"
+#include "tessera/detection3.hpp"
+#include "tessera/interfaces.hpp"
+#include "tessera/step.hpp"
+#include "tessera/subcontacts.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 

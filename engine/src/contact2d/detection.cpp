@@ -1,5 +1,7 @@
 // Contact detection pass: cell-grid broad phase on bounding boxes, rounded-corner search for
 // each candidate pair, and a merge that keeps the history of contacts that persist.
+#include "tessera/detection.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -7,7 +9,7 @@
 
 #include "tessera/contact_geometry.hpp"
 #include "tessera/deformable.hpp"
-#include "tessera/solver.hpp"
+#include "tessera/step.hpp"
 
 namespace tessera {
 
@@ -234,7 +236,7 @@ void build_adjacency(Model& m) {
   }
 }
 
-std::string find_overlap(const Model& m) {
+std::string find_overlap2d(const Model& m) {
   const Blocks& B = m.blocks;
   const double tol = m.tolerance();
   const std::vector<Box> boxes = block_boxes(B, 0.0);

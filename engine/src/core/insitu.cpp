@@ -1,6 +1,9 @@
 #include "tessera/insitu.hpp"
 
-#include "tessera/solver.hpp"
+#include "tessera/detection.hpp"
+#include "tessera/interfaces.hpp"
+#include "tessera/step.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 

@@ -1,10 +1,12 @@
 // Sub-contacts of a 3D contact: the overlap of the two facing faces on the common plane, and
 // the joint law at each of its corners (see contacts3.hpp).
+#include "tessera/subcontacts.hpp"
+
 #include <algorithm>
 #include <cmath>
 
+#include "tessera/common_plane.hpp"
 #include "tessera/contacts.hpp"
-#include "tessera/solver3.hpp"
 
 namespace tessera {
 
@@ -221,7 +223,7 @@ void follow(const Model& m, Contact3& c, const Vec3& n) {
 }
 }  // namespace
 
-void update_contact3(const Model& m, Contact3& c) {
+void update_plane3(const Model& m, Contact3& c) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   // The plane moves with the blocks: the same candidate, re-evaluated (a face's normal is read
@@ -244,6 +246,11 @@ void update_contact3(const Model& m, Contact3& c) {
       c.drift = 0.0;
     }
   }
+}
+
+void joint_forces3(const Model& m, Contact3& c) {
+  const Blocks3& B = m.blocks3;
+  const uint32_t a = c.a, b = c.b;
   const Vec3 n = c.normal;
   const auto [t1, t2] = tangents(n);
   // The bodies that move the two pieces (a slave piece moves with its master).
@@ -261,7 +268,7 @@ void update_contact3(const Model& m, Contact3& c) {
   for (SubContact& s : c.subs) {
     const double overlap = without_roundoff(-s.gap, roundoff);
     const double un = overlap + s.dilation;
-    if (un <= 0.0 && s.fn == 0.0 && !(s.flags & (kBonded | kTouching))) {
+    if (stays_open(un, s.fn, s.flags)) {
       s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();
       continue;
     }

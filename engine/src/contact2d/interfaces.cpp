@@ -1,18 +1,18 @@
-// One cycle, top to bottom: detection when due, contact geometry and joint law, interface
-// lengths and forces, then block resultants, damping and integration.
+// The 2D contact stages: each corner's feature, gap, normal and point (rounded corners,
+// chapter 5.2.1), then per interface the contacts' shares of joint length and the joint law,
+// giving each contact's force.
+#include "tessera/interfaces.hpp"
+
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "stage_timer.hpp"
 #include "tessera/contact_geometry.hpp"
 #include "tessera/deformable.hpp"
 #include "tessera/parallel.hpp"
-#include "tessera/solver.hpp"
-#include "tessera/solver3.hpp"
+#include "tessera/step.hpp"
 
 namespace tessera {
 
@@ -36,7 +36,7 @@ bool corner_buried(const Blocks& B, uint32_t v, uint32_t b, double overlap) {
 
 // Contact geometry from the current positions: the nearest feature of the other block to each
 // corner (searched around last cycle's feature), gap, normal, contact point and chord.
-void update_contacts(Model& m) {
+void update_corner_contacts(Model& m) {
   const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
   parallel_for(C.size(), [&](size_t i0, size_t i1) {
@@ -185,6 +185,8 @@ constexpr double kOverlapLimit = 0.5;
 // Per interface: the length of each contact, then the joint law for each contact, giving its
 // force. Contacts facing the same way form one joint line (a concave block can touch another
 // along two faces); each line shares its length on its own.
+}  // namespace
+
 void update_interfaces(Model& m) {
   const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
@@ -260,7 +262,6 @@ void update_interfaces(Model& m) {
               C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
               continue;
             }
-            // Open, unbonded, and open before: nothing to do but remember the opening.
             const double overlap = without_roundoff(-C.gap[i] + C.closure[i], roundoff);
             if (-C.gap[i] > kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])) {
               uint32_t seen = too_deep.load(std::memory_order_relaxed);
@@ -268,7 +269,7 @@ void update_interfaces(Model& m) {
               }
             }
             const double un = overlap + C.dilation[i];
-            if (un <= 0.0 && C.fn[i] == 0.0 && !(C.flags[i] & (kBonded | kTouching))) {
+            if (stays_open(un, C.fn[i], C.flags[i])) {
               C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
               C.flags[i] &= static_cast<uint8_t>(~kPreload);
               continue;
@@ -302,270 +303,8 @@ void update_interfaces(Model& m) {
     throw_overlap(m, i);
 }
 
-// Sign of a velocity component for local damping (zero at rest).
-inline double sgn(double v) {
-  return (v > 0.0) - (v < 0.0);
-}
-
-// Resultants, damping and central-difference integration of every block.
-void move_blocks(Model& m) {
-  Blocks& B = m.blocks;
-  const Contacts& C = m.contacts;
-  const Settings& S = m.settings;
-  const double dt = m.dt;
-  const size_t n = B.size();
-  const double tol = m.tolerance();
-  std::vector<double> unbalanced(n, 0.0), drift(n, 0.0), jump(n, 0.0);
-  // Resultants: gravity plus contact forces, gathered in a fixed order per block.
-  parallel_for(n, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      double fx = B.mass[b] * S.gravity.x(), fy = B.mass[b] * S.gravity.y(), mz = 0.0;
-      double applied = B.mass[b] * S.gravity.norm();
-      for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
-        const uint32_t i = m.block_contacts[k] >> 1;
-        const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
-        const Vec2 f = sign * C.force[i];
-        fx += f.x(), fy += f.y();
-        mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
-        applied += C.force_mag[i];
-      }
-      B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
-    }
-  });
-  // Adaptive global damping: servo the viscosity so that damping absorbs the chosen share of
-  // the power of the unbalanced forces (Cundall 1982), adjusted every 10 cycles.
-  if (S.damping == DampingMode::kAdaptiveGlobal && m.cycle % 10 == 0) {
-    // Power of the unbalanced forces and twice the kinetic energy, over free degrees of freedom.
-    const double power = deterministic_sum(n, [&](size_t b) {
-      const uint8_t fix = B.fixity[b];
-      double p = 0.0;
-      if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) p += std::abs(B.fx[b] * B.vx[b]);
-      if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) p += std::abs(B.fy[b] * B.vy[b]);
-      if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) p += std::abs(B.moment[b] * B.omega[b]);
-      return p;
-    });
-    const double kin2 = deterministic_sum(n, [&](size_t b) {
-      const uint8_t fix = B.fixity[b];
-      double k = 0.0;
-      if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) k += B.mass[b] * B.vx[b] * B.vx[b];
-      if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) k += B.mass[b] * B.vy[b] * B.vy[b];
-      if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) k += B.inertia[b] * B.omega[b] * B.omega[b];
-      return k;
-    });
-    servo_global_damping(m, power, kin2);
-  }
-  const double c_glob = S.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
-  const double alpha = S.damping == DampingMode::kLocal ? S.local_alpha : 0.0;
-  // Damping and integration, one degree of freedom at a time.
-  parallel_for(n, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      const uint8_t fix = B.fixity[b];
-      double ub2 = 0.0;
-      auto advance = [&](double f, double& v, double inv_m, double mass, bool fixed,
-                         double v_fixed) {
-        if (fixed || inv_m == 0.0) {
-          v = fixed ? v_fixed : 0.0;
-          return;
-        }
-        ub2 += f * f;
-        const double fd = f - alpha * std::abs(f) * sgn(v) - c_glob * mass * v;
-        v += dt * fd * inv_m;
-      };
-      advance(B.fx[b], B.vx[b], B.inv_mass[b], B.mass[b], fix & kFixX, B.fixed_vx[b]);
-      advance(B.fy[b], B.vy[b], B.inv_mass[b], B.mass[b], fix & kFixY, B.fixed_vy[b]);
-      const double ub_force = ub2;
-      advance(B.moment[b], B.omega[b], B.inv_inertia[b], B.inertia[b], fix & kFixRot,
-              B.fixed_omega[b]);
-      unbalanced[b] = std::sqrt(ub_force);
-      B.x[b] += dt * B.vx[b];
-      B.y[b] += dt * B.vy[b];
-      B.theta[b] += dt * B.omega[b];
-      B.update_world(b);
-      // Largest vertex displacement since the last detection pass.
-      const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
-      drift[b] =
-          std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
-      // A block that moves a tenth of its size in one step has left explicit dynamics.
-      jump[b] = dt *
-                (std::sqrt(B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
-                 B.bound_radius[b] * std::abs(B.omega[b])) /
-                B.bound_radius[b];
-    }
-  });
-  // Convergence measures over the blocks that move under load.
-  size_t free_blocks = 0, worst = 0;
-  double max_ub = 0.0, max_drift = 0.0;
-  for (size_t b = 0; b < n; ++b) {
-    max_drift = std::max(max_drift, drift[b]);
-    if (!(jump[b] <= jump[worst])) worst = b;
-    if (B.inv_mass[b] == 0.0 || (B.fixity[b] & (kFixX | kFixY)) == (kFixX | kFixY)) continue;
-    ++free_blocks;
-    max_ub = std::max(max_ub, unbalanced[b]);
-  }
-  const double sum_applied = deterministic_sum(n, [&](size_t b) {
-    const bool moves = B.inv_mass[b] > 0.0 && (B.fixity[b] & (kFixX | kFixY)) != (kFixX | kFixY);
-    return moves ? B.applied[b] : 0.0;
-  });
-  m.max_unbalanced = max_ub;
-  m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
-  m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
-  // Deformable blocks: the nodes' own cycle, with the contact forces added in between.
-  Continuum& zc = m.continuum;
-  if (zc.zone_count() > 0) {
-    zc.gravity = S.gravity;
-    zc.local_damping = alpha;
-    zc.dt = dt;
-    zone_forces(zc);
-    add_contact_forces_to_nodes(m);
-    const double node_move = move_nodes(zc);
-    update_deformable_world(m);
-    // A node that moves half the contact tolerance in one step has left explicit dynamics.
-    if (!std::isfinite(node_move) || node_move > 0.5 * tol)
-      throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
-                       ": a node of a deformable block moved " + std::to_string(node_move) +
-                       " m in one step (time step too large, or blocks overlapping badly)");
-    if (m.det_node.size() != zc.node_count()) m.det_node = zc.pos0;
-    for (size_t k = 0; k < zc.node_count(); ++k)
-      max_drift = std::max(max_drift, (zc.pos[k] - m.det_node[k]).norm());
-    m.ratio = free_blocks ? std::max(m.ratio, zc.ratio) : zc.ratio;
-    if (!std::isfinite(zc.ratio)) max_drift = zc.ratio;
-  }
-  if (max_drift > 0.5 * tol) m.detection_due = true;
-  if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(jump[worst] < 0.1))
-    throw_diverged(m, B.id[worst]);
-}
-
-}  // namespace
-
-void throw_diverged(const Model& m, int block_id) {
-  throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
-                   std::to_string(block_id) +
-                   " moved more than a tenth of its size in one step (time step too large for "
-                   "the joint stiffness, or blocks overlapping badly)");
-}
-
-void servo_global_damping(Model& m, double power, double kin2) {
-  if (!(kin2 > 0.0)) return;
-  const double target = m.settings.global_ratio * power / kin2;
-  m.global_c =
-      m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
-}
-
-const char* stage_name(int stage) {
-  static const char* const names[] = {"detect", "contacts", "interfaces", "motion"};
-  return names[stage];
-}
-
-RunOptions& run_options() {
-  static RunOptions options{TESSERA_VALIDATE_DEFAULT != 0, nullptr};
-  return options;
-}
-
-double compute_timestep(const Model& m) {
-  if (m.settings.dt_fixed > 0.0) return m.settings.dt_fixed;
-  if (m.dim == 3) return compute_timestep3(m);
-  double kmax = 0.0;
-  for (const JointProperties& j : m.joints) kmax = std::max({kmax, j.kn, j.ks});
-  const Blocks& B = m.blocks;
-  double dt = std::numeric_limits<double>::infinity();
-  // Each block: contact length in touch is at most its perimeter, at most bound_radius away.
-  for (size_t b = 0; b < B.size(); ++b) {
-    if (B.fixity[b] == kFixAll || kmax <= 0.0) continue;
-    const double k = kmax * B.perimeter[b];
-    if (B.inv_mass[b] > 0.0) dt = std::min(dt, 2.0 * std::sqrt(B.mass[b] / k));
-    if (B.inv_inertia[b] > 0.0)
-      dt =
-          std::min(dt, 2.0 * std::sqrt(B.inertia[b] / (k * B.bound_radius[b] * B.bound_radius[b])));
-  }
-  dt = std::min(dt, deformable_timestep(m));
-  if (!std::isfinite(dt) || dt >= 1e299) return 1e-3;
-  return m.settings.dt_safety * dt;
-}
-
-void prepare(Model& m) {
-  if (m.dim == 3) return prepare3(m);
-  if (m.blocks.size() == 0) throw ModelError("the model has no blocks");
-  // Joint properties are asked for by the first contact that needs them (naming its blocks): a
-  // single zoned block has none. Contacts need the rounding length.
-  if (m.settings.rounding <= 0.0 && m.blocks.size() > 1)
-    throw ModelError("the rounding length is not set (use 'round')");
-  for (size_t b = 0; b < m.blocks.size(); ++b)
-    if (m.blocks.mass[b] <= 0.0 && m.blocks.fixity[b] != kFixAll)
-      throw ModelError("block " + std::to_string(m.blocks.id[b]) +
-                       " has no mass: give it a material with a density");
-  if (m.dt_dirty) {
-    scale_node_inertia(m);
-    m.dt = compute_timestep(m);
-    m.dt_dirty = false;
-  }
-  if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
-  if (m.block_contact_begin.size() != m.blocks.size() + 1) build_adjacency(m);
-}
-
 void update_contact_geometry(Model& m) {
-  update_contacts(m);
-}
-
-void cycle(Model& m) {
-  if (m.dim == 3) return cycle3(m);
-  {
-    StageTimer t(kStageDetect);
-    if (m.detection_due) detect_contacts(m);
-  }
-  {
-    StageTimer t(kStageContacts);
-    update_contacts(m);
-  }
-  {
-    StageTimer t(kStageInterfaces);
-    update_interfaces(m);
-  }
-  {
-    StageTimer t(kStageMotion);
-    move_blocks(m);
-  }
-  if (run_options().validate) validate(m);
-  m.time += m.dt;
-  ++m.cycle;
-  if (Profile* p = run_options().profile) ++p->cycles;
-  sample_histories(m);
-}
-
-double kinetic_energy(const Model& m) {
-  if (m.dim == 3) return kinetic_energy3(m);
-  const Blocks& B = m.blocks;
-  return 0.5 * deterministic_sum(B.size(), [&](size_t b) {
-           return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
-                  B.inertia[b] * B.omega[b] * B.omega[b];
-         });
-}
-
-uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t every) {
-  prepare(m);
-  for (uint64_t i = 0; i < n; ++i) {
-    cycle(m);
-    if (progress && every && (i + 1) % every == 0 && !progress(m)) return i + 1;
-  }
-  return n;
-}
-
-SolveResult solve(Model& m, double ratio, uint64_t max_cycles, const Progress& progress,
-                  uint64_t every) {
-  prepare(m);
-  SolveResult r;
-  while (r.cycles < max_cycles) {
-    cycle(m);
-    ++r.cycles;
-    if (m.ratio <= ratio) {
-      r.converged = true;
-      break;
-    }
-    if (progress && every && r.cycles % every == 0 && !progress(m)) {
-      r.stopped = true;
-      break;
-    }
-  }
-  return r;
+  update_corner_contacts(m);
 }
 
 }  // namespace tessera

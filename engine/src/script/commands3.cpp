@@ -3,12 +3,14 @@
 #include <cmath>
 #include <tuple>
 
+#include "tessera/common_plane.hpp"
+#include "tessera/detection3.hpp"
 #include "tessera/expr.hpp"
 #include "tessera/generators.hpp"
 #include "tessera/generators3.hpp"
 #include "tessera/random.hpp"
 #include "tessera/script.hpp"
-#include "tessera/solver3.hpp"
+#include "tessera/subcontacts.hpp"
 
 namespace tessera {
 

@@ -9,7 +9,10 @@
 #include <type_traits>
 
 #include "tessera/deformable.hpp"
-#include "tessera/solver.hpp"
+#include "tessera/detection.hpp"
+#include "tessera/interfaces.hpp"
+#include "tessera/step.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 
@@ -18,6 +21,21 @@ namespace {
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
 constexpr uint32_t kVersion = 7;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
+
+// Records written as their bytes whose structs have padding: their members, so that the padding
+// can be written as zeros (it holds whatever the memory held, and a state file of the same model
+// must be the same file every time).
+template <class F>
+void members(const SubContact& s, F f) {
+  f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
+  f(s.sd2), f(s.fs), f(s.flags), f(s.force);
+}
+template <class F>
+void members(const RigidBody3& b, F f) {
+  f(b.mass), f(b.principal), f(b.orientation), f(b.position), f(b.velocity), f(b.momentum);
+}
+template <class T>
+constexpr bool kPadded = std::is_same_v<T, SubContact> || std::is_same_v<T, RigidBody3>;
 
 class Writer {
  public:
@@ -32,6 +50,15 @@ class Writer {
     pod<uint64_t>(v.size());
     if constexpr (std::is_same_v<T, Vec2>) {
       for (const Vec2& p : v) pod(p.x()), pod(p.y());
+    } else if constexpr (kPadded<T>) {
+      for (const T& r : v) {
+        char bytes[sizeof(T)] = {};
+        const char* base = reinterpret_cast<const char*>(&r);
+        members(r, [&](const auto& x) {
+          std::memcpy(bytes + (reinterpret_cast<const char*>(&x) - base), &x, sizeof x);
+        });
+        out_.write(bytes, sizeof bytes);
+      }
     } else {
       out_.write(reinterpret_cast<const char*>(v.data()),
                  static_cast<std::streamsize>(v.size() * sizeof(T)));

@@ -1,0 +1,15 @@
+// The 3D contact stages of the cycle (contact3d/subcontacts.cpp): where a 3D contact's
+// geometry and force are computed.
+#pragma once
+
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+// Moves a contact's common plane with its blocks and rebuilds or follows its sub-contacts.
+void update_plane3(const Model& m, Contact3& c);
+// The joint law at each sub-contact, and the contact's resultant force and torques (on a; b
+// takes the opposite).
+void joint_forces3(const Model& m, Contact3& c);
+
+}  // namespace tessera

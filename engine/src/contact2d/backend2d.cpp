@@ -1,0 +1,159 @@
+// The 2D back end of the cycle: rounded-corner contacts (interfaces.cpp, detection.cpp) and
+// rigid blocks with three degrees of freedom, moved by central differences.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/backend.hpp"
+#include "tessera/detection.hpp"
+#include "tessera/interfaces.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/step.hpp"
+
+namespace tessera {
+
+namespace {
+
+void prepare2d(Model& m) {
+  // Joint properties are asked for by the first contact that needs them (naming its blocks): a
+  // single zoned block has none. Contacts need the rounding length.
+  if (m.settings.rounding <= 0.0 && m.blocks.size() > 1)
+    throw ModelError("the rounding length is not set (use 'round')");
+  for (size_t b = 0; b < m.blocks.size(); ++b)
+    if (m.blocks.mass[b] <= 0.0 && m.blocks.fixity[b] != kFixAll)
+      throw ModelError("block " + std::to_string(m.blocks.id[b]) +
+                       " has no mass: give it a material with a density");
+  if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
+  if (m.block_contact_begin.size() != m.blocks.size() + 1) build_adjacency(m);
+}
+
+// Gravity plus contact forces, gathered in a fixed order per block.
+void resultants2d(Model& m) {
+  Blocks& B = m.blocks;
+  const Contacts& C = m.contacts;
+  const Vec2 g = m.settings.gravity;
+  parallel_for(B.size(), [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      double fx = B.mass[b] * g.x(), fy = B.mass[b] * g.y(), mz = 0.0;
+      double applied = B.mass[b] * g.norm();
+      for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
+        const uint32_t i = m.block_contacts[k] >> 1;
+        const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
+        const Vec2 f = sign * C.force[i];
+        fx += f.x(), fy += f.y();
+        mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
+        applied += C.force_mag[i];
+      }
+      B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
+    }
+  });
+}
+
+// Power of the unbalanced forces and twice the kinetic energy, over free degrees of freedom.
+Power power2d(const Model& m) {
+  const Blocks& B = m.blocks;
+  Power p;
+  p.power = deterministic_sum(B.size(), [&](size_t b) {
+    const uint8_t fix = B.fixity[b];
+    double w = 0.0;
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) w += std::abs(B.fx[b] * B.vx[b]);
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) w += std::abs(B.fy[b] * B.vy[b]);
+    if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) w += std::abs(B.moment[b] * B.omega[b]);
+    return w;
+  });
+  p.kin2 = deterministic_sum(B.size(), [&](size_t b) {
+    const uint8_t fix = B.fixity[b];
+    double k = 0.0;
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) k += B.mass[b] * B.vx[b] * B.vx[b];
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) k += B.mass[b] * B.vy[b] * B.vy[b];
+    if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) k += B.inertia[b] * B.omega[b] * B.omega[b];
+    return k;
+  });
+  return p;
+}
+
+// Damping and integration, one degree of freedom at a time.
+void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
+  Blocks& B = m.blocks;
+  const double dt = m.dt;
+  out.reset(B.size());
+  parallel_for(B.size(), [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      const uint8_t fix = B.fixity[b];
+      double ub2 = 0.0;
+      auto advance = [&](double f, double& v, double inv_m, double mass, bool fixed,
+                         double v_fixed) {
+        if (fixed || inv_m == 0.0) {
+          v = fixed ? v_fixed : 0.0;
+          return;
+        }
+        ub2 += f * f;
+        const double fd = locally_damped(f, v, d.alpha) - d.viscosity * mass * v;
+        v += dt * fd * inv_m;
+      };
+      advance(B.fx[b], B.vx[b], B.inv_mass[b], B.mass[b], fix & kFixX, B.fixed_vx[b]);
+      advance(B.fy[b], B.vy[b], B.inv_mass[b], B.mass[b], fix & kFixY, B.fixed_vy[b]);
+      const double ub_force = ub2;
+      advance(B.moment[b], B.omega[b], B.inv_inertia[b], B.inertia[b], fix & kFixRot,
+              B.fixed_omega[b]);
+      out.unbalanced[b] = std::sqrt(ub_force);
+      B.x[b] += dt * B.vx[b];
+      B.y[b] += dt * B.vy[b];
+      B.theta[b] += dt * B.omega[b];
+      B.update_world(b);
+      // Largest vertex displacement since the last detection pass.
+      const double dx = B.x[b] - m.det_x[b], dy = B.y[b] - m.det_y[b];
+      out.drift[b] =
+          std::sqrt(dx * dx + dy * dy) + B.bound_radius[b] * std::abs(B.theta[b] - m.det_theta[b]);
+      out.jump[b] = dt *
+                    (std::sqrt(B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
+                     B.bound_radius[b] * std::abs(B.omega[b])) /
+                    B.bound_radius[b];
+    }
+  });
+}
+
+bool moves2d(const Model& m, size_t b) {
+  const Blocks& B = m.blocks;
+  return B.inv_mass[b] > 0.0 && (B.fixity[b] & (kFixX | kFixY)) != (kFixX | kFixY);
+}
+
+double applied2d(const Model& m, size_t b) {
+  return m.blocks.applied[b];
+}
+
+// Each block: the joint length in touch is at most its perimeter, at most bound_radius away.
+double timestep2d(const Model& m, double k) {
+  const Blocks& B = m.blocks;
+  double dt = std::numeric_limits<double>::infinity();
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (B.fixity[b] == kFixAll || k <= 0.0) continue;
+    const double kb = k * B.perimeter[b];
+    if (B.inv_mass[b] > 0.0) dt = std::min(dt, 2.0 * std::sqrt(B.mass[b] / kb));
+    if (B.inv_inertia[b] > 0.0)
+      dt = std::min(dt,
+                    2.0 * std::sqrt(B.inertia[b] / (kb * B.bound_radius[b] * B.bound_radius[b])));
+  }
+  return dt;
+}
+
+double kinetic_energy2d(const Model& m) {
+  const Blocks& B = m.blocks;
+  return 0.5 * deterministic_sum(B.size(), [&](size_t b) {
+           return B.mass[b] * (B.vx[b] * B.vx[b] + B.vy[b] * B.vy[b]) +
+                  B.inertia[b] * B.omega[b] * B.omega[b];
+         });
+}
+
+}  // namespace
+
+const Backend& backend2d() {
+  static const Backend be{prepare2d,         detect_contacts,  update_contact_geometry,
+                          update_interfaces, resultants2d,     power2d,
+                          integrate2d,       moves2d,          applied2d,
+                          timestep2d,        kinetic_energy2d, find_overlap2d,
+                          validate2d};
+  return be;
+}
+
+}  // namespace tessera

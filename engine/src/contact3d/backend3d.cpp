@@ -1,0 +1,199 @@
+// The 3D back end of the cycle: common-plane contacts with sub-contacts (subcontacts.cpp,
+// detection3.cpp) and rigid blocks with six degrees of freedom (rigid3d.cpp: central
+// differences for translation, the DRL splitting for rotation).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/backend.hpp"
+#include "tessera/detection3.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/step.hpp"
+#include "tessera/subcontacts.hpp"
+
+namespace tessera {
+
+namespace {
+
+void prepare3d(Model& m) {
+  const Blocks3& B = m.blocks3;
+  // Joint properties are asked for by the first contact that needs them, naming its blocks.
+  if (m.tolerance() <= 0.0 && B.size() > 1)
+    throw ModelError("the contact tolerance is not set (use 'tolerance T' or 'round D')");
+  for (size_t b = 0; b < B.size(); ++b)
+    if (B.body[b].mass <= 0.0 && B.fixity[b] != kFix3All && !B.is_slave(b))
+      throw ModelError("block " + std::to_string(B.id[b]) +
+                       " has no mass: give it a material with a density");
+  // Angular velocities from the momenta (a script may have set either).
+  for (size_t b = 0; b < B.size(); ++b)
+    m.blocks3.omega[b] = B.body[b].mass > 0.0 && B.fixity[b] != kFix3All
+                             ? B.body[b].angular_velocity()
+                             : B.fixed_w[b];
+  if (m.det_pos3.size() != B.size()) m.detection_due = true;
+  if (m.block_contact_begin.size() != B.size() + 1) build_adjacency3(m);
+}
+
+void each_contact(Model& m, void (*f)(const Model&, Contact3&)) {
+  parallel_for(
+      m.contacts3.size(),
+      [&](size_t c0, size_t c1) {
+        for (size_t i = c0; i < c1; ++i) f(m, m.contacts3[i]);
+      },
+      64);
+}
+void geometry3d(Model& m) {
+  each_contact(m, update_plane3);
+}
+void joint_forces3d(Model& m) {
+  each_contact(m, joint_forces3);
+}
+
+// Gravity plus contact forces, gathered in a fixed order per block; slave pieces hand theirs
+// to their masters (in block order: deterministic).
+void resultants3d(Model& m) {
+  Blocks3& B = m.blocks3;
+  const Vec3 g = m.settings.gravity3;
+  const size_t n = B.size();
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      const double mass = B.body[b].mass;
+      Vec3 f = mass * g, t = Vec3::Zero();
+      double applied = mass * g.norm();
+      for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
+        const Contact3& c = m.contacts3[m.block_contacts[k] >> 1];
+        if (m.block_contacts[k] & 1)
+          f -= c.force, t += c.torque_b;
+        else
+          f += c.force, t += c.torque_a;
+        applied += c.force_mag;
+      }
+      B.force[b] = f, B.torque[b] = t, B.applied[b] = applied;
+    }
+  });
+  for (size_t b = 0; b < n; ++b)
+    if (B.is_slave(b)) {
+      const auto mb = static_cast<size_t>(B.master[b]);
+      B.force[mb] += B.force[b], B.torque[mb] += B.torque[b], B.applied[mb] += B.applied[b];
+    }
+}
+
+// As in 2D, on translation and rotation.
+Power power3d(const Model& m) {
+  const Blocks3& B = m.blocks3;
+  Power p;
+  p.power = deterministic_sum(B.size(), [&](size_t b) {
+    if (B.fixity[b] == kFix3All || B.body[b].mass <= 0.0) return 0.0;
+    return B.force[b].cwiseProduct(B.body[b].velocity).cwiseAbs().sum() +
+           B.torque[b].cwiseProduct(B.body[b].angular_velocity()).cwiseAbs().sum();
+  });
+  p.kin2 = deterministic_sum(B.size(), [&](size_t b) {
+    if (B.fixity[b] == kFix3All || B.body[b].mass <= 0.0) return 0.0;
+    return 2.0 * B.body[b].kinetic_energy();
+  });
+  return p;
+}
+
+// An upper bound of the rotation angle between two orientations (2 asin s <= pi s, with s the
+// sine of the half angle), cheaper than the angle itself.
+double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
+  return M_PI * (q0.conjugate() * q1).vec().norm();
+}
+
+void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
+  Blocks3& B = m.blocks3;
+  const double dt = m.dt;
+  const size_t n = B.size();
+  out.reset(n);
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b) {
+      RigidBody3& body = B.body[b];
+      const uint8_t fix = B.fixity[b];
+      if (B.is_slave(b)) continue;  // moved with its master below
+      if (body.mass <= 0.0 || fix == kFix3All) {
+        // Held: moves at its prescribed velocity.
+        body.velocity = B.fixed_v[b];
+        body.momentum = Vec3::Zero();
+        if (B.fixed_w[b].squaredNorm() > 0.0) {
+          const double angle = B.fixed_w[b].norm() * dt;
+          body.orientation =
+              Eigen::Quaterniond(Eigen::AngleAxisd(angle, B.fixed_w[b].normalized())) *
+              body.orientation;
+          body.orientation.normalize();
+        }
+        body.position += dt * body.velocity;
+      } else {
+        Vec3 f = B.force[b], t = B.torque[b];
+        out.unbalanced[b] = f.norm();
+        // Local damping on each component against its velocity; global viscous damping.
+        const Vec3 v = body.velocity, w = B.omega[b];
+        for (int k = 0; k < 3; ++k) {
+          f[k] = locally_damped(f[k], v[k], d.alpha);
+          t[k] = locally_damped(t[k], w[k], d.alpha);
+        }
+        f -= d.viscosity * body.mass * v;
+        t -= d.viscosity * body.momentum;
+        // Fixed components: no force, the prescribed velocity.
+        for (int k = 0; k < 3; ++k)
+          if (fix & (1 << k)) f[k] = 0.0, body.velocity[k] = B.fixed_v[b][k];
+        if (fix & kFix3Rot) t = Vec3::Zero(), body.momentum = Vec3::Zero();
+        step_body(body, f, t, dt);
+      }
+      B.omega[b] = body.mass > 0.0 && fix != kFix3All ? body.angular_velocity() : B.fixed_w[b];
+      B.update_world(b);
+      out.drift[b] = (body.position - m.det_pos3[b]).norm() +
+                     B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
+      out.jump[b] =
+          dt * (body.velocity.norm() + B.bound_radius[b] * B.omega[b].norm()) / B.bound_radius[b];
+      if (!std::isfinite(out.jump[b])) out.jump[b] = 1e300;
+    }
+  });
+  parallel_for(n, [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      if (B.is_slave(b)) B.update_world(b);
+  });
+}
+
+bool moves3d(const Model& m, size_t b) {
+  const Blocks3& B = m.blocks3;
+  return B.body[b].mass > 0.0 && (B.fixity[b] & 7) != 7;
+}
+
+double applied3d(const Model& m, size_t b) {
+  return m.blocks3.applied[b];
+}
+
+// Each body: the joint area in touch is at most its surface (all its pieces'), at most
+// bound_radius away.
+double timestep3d(const Model& m, double k) {
+  const Blocks3& B = m.blocks3;
+  double dt = std::numeric_limits<double>::infinity();
+  std::vector<double> surface(B.size(), 0.0);
+  for (size_t b = 0; b < B.size(); ++b) surface[static_cast<size_t>(B.master[b])] += B.surface[b];
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (B.fixity[b] == kFix3All || k <= 0.0 || B.body[b].mass <= 0.0 || B.is_slave(b)) continue;
+    const double kb = k * surface[b];
+    const double r = B.bound_radius[b];
+    dt = std::min(dt, 2.0 * std::sqrt(B.body[b].mass / kb));
+    dt = std::min(dt, 2.0 * std::sqrt(B.body[b].principal.minCoeff() / (kb * r * r)));
+  }
+  return dt;
+}
+
+double kinetic_energy3d(const Model& m) {
+  const Blocks3& B = m.blocks3;
+  return deterministic_sum(B.size(), [&](size_t b) {
+    return B.fixity[b] == kFix3All ? 0.0 : B.body[b].kinetic_energy();
+  });
+}
+
+}  // namespace
+
+const Backend& backend3d() {
+  static const Backend be{prepare3d,    detect_contacts3, geometry3d,       joint_forces3d,
+                          resultants3d, power3d,          integrate3d,      moves3d,
+                          applied3d,    timestep3d,       kinetic_energy3d, find_overlap3,
+                          validate3d};
+  return be;
+}
+
+}  // namespace tessera

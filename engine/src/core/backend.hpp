@@ -1,0 +1,58 @@
+// What the one cycle (step.cpp) asks of a dimension: contact detection and geometry, the joint
+// forces, and rigid-body motion with 3 (2D) or 6 (3D) degrees of freedom. Internal to the engine.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tessera/damping.hpp"
+#include "tessera/model.hpp"
+
+namespace tessera {
+
+// What integration leaves per block for the core's convergence and divergence checks.
+struct BlockMotion {
+  std::vector<double> unbalanced;  // norm of the unbalanced force (translation)
+  std::vector<double> drift;       // largest displacement of a point since the last detection
+  std::vector<double> jump;        // step's displacement as a share of the block's size
+  void reset(size_t n) { unbalanced.assign(n, 0.0), drift.assign(n, 0.0), jump.assign(n, 0.0); }
+};
+
+// Power of the unbalanced forces and twice the kinetic energy over free degrees of freedom
+// (adaptive global damping).
+struct Power {
+  double power = 0.0, kin2 = 0.0;
+};
+
+struct Backend {
+  // Checks and caches before cycling (the block store's own; the core does the rest).
+  void (*prepare)(Model& m);
+  // Detection pass: broad phase, contact search, merge with the contacts that persist.
+  void (*detect)(Model& m);
+  // Contact geometry from the current positions (2D corners and features, 3D common planes and
+  // sub-contacts).
+  void (*geometry)(Model& m);
+  // Joint law at every contact (2D: shares of joint length first), giving contact forces.
+  void (*joint_forces)(Model& m);
+  // Each block's resultant force and moment and the load it carries.
+  void (*resultants)(Model& m);
+  Power (*power)(const Model& m);
+  // Damping and central-difference integration of every rigid block.
+  void (*integrate)(Model& m, const Damping& d, BlockMotion& out);
+  // Whether block b moves under load (counts in the unbalanced-force ratio), and its load.
+  bool (*moves)(const Model& m, size_t b);
+  double (*applied)(const Model& m, size_t b);
+  // Stable step of the rigid blocks on joints of stiffness k (Pa/m); infinity if none moves.
+  double (*timestep)(const Model& m, double k);
+  double (*kinetic_energy)(const Model& m);
+  std::string (*find_overlap)(const Model& m);
+  void (*validate)(const Model& m);
+};
+
+const Backend& backend2d();
+const Backend& backend3d();
+inline const Backend& backend(const Model& m) {
+  return m.dim == 3 ? backend3d() : backend2d();
+}
+
+}  // namespace tessera

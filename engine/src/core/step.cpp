@@ -1,0 +1,143 @@
+// The one cycle of every model, 2D or 3D, top to bottom; run and solve control.
+#include "tessera/step.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "backend.hpp"
+#include "core/stage_timer.hpp"
+#include "tessera/deformable.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/timestep.hpp"
+#include "tessera/zone_stage.hpp"
+
+namespace tessera {
+
+namespace {
+
+// Convergence measures over the blocks that move under load, and the checks that the run has
+// neither diverged nor drifted far enough to need a detection pass.
+void measure_motion(Model& m, const Backend& be, const BlockMotion& bm, const ZoneMotion& zm) {
+  const size_t n = m.block_count();
+  size_t free_blocks = 0, worst = 0;
+  double max_ub = 0.0, max_drift = 0.0;
+  for (size_t b = 0; b < n; ++b) {
+    max_drift = std::max(max_drift, bm.drift[b]);
+    if (!(bm.jump[b] <= bm.jump[worst])) worst = b;
+    if (!be.moves(m, b)) continue;
+    ++free_blocks;
+    max_ub = std::max(max_ub, bm.unbalanced[b]);
+  }
+  const double sum_applied =
+      deterministic_sum(n, [&](size_t b) { return be.moves(m, b) ? be.applied(m, b) : 0.0; });
+  m.max_unbalanced = max_ub;
+  m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
+  m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
+  if (zm.active) {
+    max_drift = std::max(max_drift, zm.drift);
+    m.ratio = free_blocks ? std::max(m.ratio, zm.ratio) : zm.ratio;
+    if (!std::isfinite(zm.ratio)) max_drift = zm.ratio;
+  }
+  if (max_drift > 0.5 * m.tolerance()) m.detection_due = true;
+  if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(bm.jump[worst] < 0.1))
+    throw_diverged(m, m.dim == 3 ? m.blocks3.id[worst] : m.blocks.id[worst]);
+}
+
+}  // namespace
+
+void prepare(Model& m) {
+  const Backend& be = backend(m);
+  if (m.block_count() == 0) throw ModelError("the model has no blocks");
+  be.prepare(m);
+  if (m.dt_dirty) {
+    scale_node_inertia(m);
+    m.dt = compute_timestep(m);
+    m.dt_dirty = false;
+  }
+}
+
+void step(Model& m) {
+  const Backend& be = backend(m);
+  const RunOptions& run = m.options;
+  BlockMotion motion;
+  ZoneMotion zones;
+  Damping damping;
+  {
+    StageTimer t(run, kStageDetect);
+    if (m.detection_due) be.detect(m);
+  }
+  {
+    StageTimer t(run, kStageContacts);
+    be.geometry(m);
+  }
+  {
+    StageTimer t(run, kStageInterfaces);
+    be.joint_forces(m);
+  }
+  {
+    StageTimer t(run, kStageMotion);
+    be.resultants(m);
+    const Power p = servo_due(m) ? be.power(m) : Power{};
+    damping = cycle_damping(m, p.power, p.kin2);
+    be.integrate(m, damping, motion);
+  }
+  {
+    StageTimer t(run, kStageZones);
+    zones = zone_stage(m, damping);
+  }
+  measure_motion(m, be, motion, zones);
+  if (run.validate) be.validate(m);
+  m.time += m.dt;
+  ++m.cycle;
+  if (run.profile) ++run.profile->cycles;
+  sample_histories(m);
+}
+
+uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t every) {
+  prepare(m);
+  for (uint64_t i = 0; i < n; ++i) {
+    step(m);
+    if (progress && every && (i + 1) % every == 0 && !progress(m)) return i + 1;
+  }
+  return n;
+}
+
+SolveResult solve(Model& m, double ratio, uint64_t max_cycles, const Progress& progress,
+                  uint64_t every) {
+  prepare(m);
+  SolveResult r;
+  while (r.cycles < max_cycles) {
+    step(m);
+    ++r.cycles;
+    if (m.ratio <= ratio) {
+      r.converged = true;
+      break;
+    }
+    if (progress && every && r.cycles % every == 0 && !progress(m)) {
+      r.stopped = true;
+      break;
+    }
+  }
+  return r;
+}
+
+double kinetic_energy(const Model& m) {
+  return backend(m).kinetic_energy(m);
+}
+
+std::string find_overlap(const Model& m) {
+  return backend(m).find_overlap(m);
+}
+
+void validate(const Model& m) {
+  backend(m).validate(m);
+}
+
+void throw_diverged(const Model& m, int block_id) {
+  throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) + ": block " +
+                   std::to_string(block_id) +
+                   " moved more than a tenth of its size in one step (time step too large for "
+                   "the joint stiffness, or blocks overlapping badly)");
+}
+
+}  // namespace tessera
