@@ -18,7 +18,7 @@ if [ "$#" -eq 0 ]; then
   # window run in dev and release only.
   sanitized=(test_geometry test_expr test_joint_law test_script_errors test_determinism
     test_concave test_generation test_generation3d test_script_fuzz test_zones
-    test_contact_geometry test_incline test_toppling test_dynamics test_arch test_polyhedron
+    test_contact_geometry test_core test_incline test_toppling test_dynamics test_arch test_polyhedron
     test_blocks3d)
   cmake --preset asan >/dev/null
   cmake --build --preset asan --target "${sanitized[@]}"

@@ -1,0 +1,246 @@
+// The one cycle, checked the same way in 2D and 3D: time-step policies, damping modes, solve
+// control, the stop flag, history sampling, save and restore, thread counts, validation, the
+// stage profile and per-model run options. Each test runs once per dimension (data rows).
+#include <QtTest>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "support.hpp"
+#include "tessera/parallel.hpp"
+#include "tessera/state_io.hpp"
+#include "tessera/step.hpp"
+#include "tessera/timestep.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+using tessera::test::state_hash;
+
+namespace {
+constexpr double kKn = 1e9, kWeight = 2500 * 10.0;  // a 1 m cube (2D: square) of density 2500
+
+// A 1 m block resting on a fixed slab under gravity -10 along y, on a joint of kn = ks = 1e9
+// Pa/m: a square in 2D, the same square extruded 1 m along z in 3D.
+std::string scene(bool three, const std::string& settings = "") {
+  const std::string common =
+      "material define rock density=2500\n"
+      "joint define j kn=1e9 ks=1e9 friction=40\njoint assign j\n" +
+      settings;
+  const std::string slab = "-1,-1 2,-1 2,0 -1,0", block = "0,0 1,0 1,1 0,1";
+  if (three)
+    return "dimension 3\ntolerance 0.005\n" + common + "block prism " + slab +
+           " z=-0.5,1.5 group=slab material=rock\nblock prism " + block +
+           " z=0,1 group=top material=rock\nfix group=slab\ngravity 0 -10 0\n"
+           "history ydisp block=2 label=y\n";
+  return "round 0.005\n" + common + "block " + slab + " group=slab material=rock\nblock " + block +
+         " group=top material=rock\nfix group=slab\ngravity 0 -10\n"
+         "history ydisp block=2 label=y\n";
+}
+
+// The joint's share in touch: contact lengths in 2D, sub-contact areas in 3D.
+double joint_size(const Model& m) {
+  double s = 0.0;
+  if (m.dim == 3) {
+    for (const Contact3& c : m.contacts3)
+      for (const SubContact& sc : c.subs) s += sc.area;
+  } else {
+    for (size_t i = 0; i < m.contacts.size(); ++i) s += m.contacts.length[i];
+  }
+  return s;
+}
+
+double last(const Model& m, const std::string& label) {
+  const Histories& h = m.histories;
+  return h.at(h.rows() - 1, static_cast<size_t>(h.find(label)));
+}
+
+void dimensions() {
+  QTest::addColumn<bool>("three");
+  QTest::newRow("2D") << false;
+  QTest::newRow("3D") << true;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+class TestCore : public QObject {
+  Q_OBJECT
+ private slots:
+  // Fixed: the user's step exactly. Auto: the safety factor times the rigid block's translation
+  // bound 2 sqrt(m / (k S)) or less (S the perimeter or surface). Scaled (density scaling of
+  // zones) leaves a rigid model's step as auto.
+  void timestepPolicies_data() { dimensions(); }
+  void timestepPolicies() {
+    QFETCH(bool, three);
+    ScriptRun fixed, automatic, scaled;
+    fixed.run(scene(three, "timestep fixed 1.25e-5\n") + "step 40");
+    QCOMPARE(fixed.model().dt, 1.25e-5);
+    QVERIFY(std::abs(fixed.model().time - 40 * 1.25e-5) < 1e-15);
+    automatic.run(scene(three) + "step 10");
+    scaled.run(scene(three, "timestep scaled\n") + "step 10");
+    const double surface = three ? 6.0 : 4.0, mass = 2500.0;
+    const double bound = 0.5 * 2 * std::sqrt(mass / (kKn * surface));
+    qInfo("auto step %.4e s, translation bound %.4e s", automatic.model().dt, bound);
+    QVERIFY(automatic.model().dt <= bound * (1 + 1e-12));
+    QVERIFY(automatic.model().dt > 0.2 * bound);
+    QCOMPARE(automatic.model().dt, compute_timestep(automatic.model()));
+    QCOMPARE(scaled.model().dt, automatic.model().dt);
+    QCOMPARE(stiffest_joint(automatic.model()), kKn);
+  }
+
+  // Local and adaptive global damping settle the block to W / (kn L) within 0.5%; undamped, it
+  // oscillates about that overlap (its mean over ~400 periods within 1%).
+  void dampingSettlesOnTheJoint_data() {
+    QTest::addColumn<bool>("three");
+    QTest::addColumn<QString>("mode");
+    for (const char* mode : {"local", "global", "none"}) {
+      QTest::newRow(qPrintable(QString("2D ") + mode)) << false << QString(mode);
+      QTest::newRow(qPrintable(QString("3D ") + mode)) << true << QString(mode);
+    }
+  }
+  void dampingSettlesOnTheJoint() {
+    QFETCH(bool, three);
+    QFETCH(QString, mode);
+    ScriptRun r;
+    const std::string damping = "damping " + mode.toStdString() + "\n";
+    double settled = 0.0;
+    if (mode == "none") {
+      r.run(scene(three, damping) + "history interval 1\nstep 5000");
+      const Histories& h = r.model().histories;
+      const auto col = static_cast<size_t>(h.find("y"));
+      for (size_t i = h.rows() / 2; i < h.rows(); ++i) settled += h.at(i, col);
+      settled /= static_cast<double>(h.rows() - h.rows() / 2);
+    } else {
+      r.run(scene(three, damping) + "solve ratio=1e-7 cycles=100000");
+      QVERIFY(r.model().ratio <= 1e-7);
+      settled = last(r.model(), "y");
+    }
+    const double expected = kWeight / (kKn * joint_size(r.model()));
+    qInfo("%s: settles %.5e m, W / (kn L) = %.5e m", qPrintable(mode), -settled, expected);
+    QVERIFY(std::abs(-settled / expected - 1) < (mode == "none" ? 0.01 : 0.005));
+  }
+
+  // solve stops at the first cycle whose ratio is at or below the target.
+  void solveStopsAtTheRatio_data() { dimensions(); }
+  void solveStopsAtTheRatio() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    r.run(scene(three));
+    Model& m = r.model();
+    const SolveResult s = solve(m, 1e-4, 100000);
+    QVERIFY(s.converged && !s.stopped);
+    QVERIFY(m.ratio <= 1e-4);
+    QCOMPARE(m.cycle, s.cycles);
+    // One cycle earlier it was not yet there: rerun to the cycle before.
+    ScriptRun again;
+    again.run(scene(three));
+    run_cycles(again.model(), s.cycles - 1);
+    QVERIFY(again.model().ratio > 1e-4);
+  }
+
+  // A progress callback that says stop ends the run at the cycle boundary it was called on.
+  void stopFlagEndsAtACycleBoundary_data() { dimensions(); }
+  void stopFlagEndsAtACycleBoundary() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    r.run(scene(three));
+    int calls = 0;
+    const uint64_t ran = run_cycles(
+        r.model(), 1000, [&](const Model&) { return ++calls < 3; }, 10);
+    QCOMPARE(ran, uint64_t(30));
+    QCOMPARE(r.model().cycle, uint64_t(30));
+    const SolveResult s = solve(
+        r.model(), 1e-12, 1000, [](const Model&) { return false; }, 7);
+    QVERIFY(s.stopped && !s.converged);
+    QCOMPARE(s.cycles, uint64_t(7));
+  }
+
+  // Histories are sampled every `interval` cycles.
+  void historiesAtTheInterval_data() { dimensions(); }
+  void historiesAtTheInterval() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    r.run(scene(three) + "history interval 7\nstep 50");
+    const Histories& h = r.model().histories;
+    QCOMPARE(h.rows(), size_t(7));
+    for (size_t i = 0; i < h.rows(); ++i) QCOMPARE(h.cycles[i], uint64_t(7 * (i + 1)));
+  }
+
+  // Saved mid-run and restored, the run continues bit for bit; the same state saved twice is
+  // the same file (3D struct padding once made it differ).
+  void saveRestoreBitExact_data() { dimensions(); }
+  void saveRestoreBitExact() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    r.run(scene(three) + "step 200");
+    const std::string a = r.path("a.state"), b = r.path("b.state");
+    save_state(r.model(), a);
+    save_state(r.model(), b);
+    QVERIFY(file_bytes(a) == file_bytes(b));
+    run_cycles(r.model(), 300);
+    Model back = restore_state(a);
+    run_cycles(back, 300);
+    QCOMPARE(state_hash(back), state_hash(r.model()));
+    QVERIFY(state_hash(back) != 0);
+  }
+
+  // One thread or two: the same bits.
+  void sameAtEveryThreadCount_data() { dimensions(); }
+  void sameAtEveryThreadCount() {
+    QFETCH(bool, three);
+    uint64_t hash[2] = {};
+    for (int t = 1; t <= 2; ++t) {
+      set_thread_count(t);
+      ScriptRun r;
+      r.run(scene(three) + "step 500");
+      hash[t - 1] = state_hash(r.model());
+    }
+    set_thread_count(1);
+    QCOMPARE(hash[0], hash[1]);
+  }
+
+  // Validation runs after each cycle in both dimensions when the model asks for it, and the
+  // options are the model's own: another model is not validated.
+  void validationIsPerModel_data() { dimensions(); }
+  void validationIsPerModel() {
+    QFETCH(bool, three);
+    ScriptRun checked, other;
+    checked.run(scene(three) + "step 5");
+    other.run(scene(three) + "step 5");
+    Model& m = checked.model();
+    m.options.validate = true;
+    other.model().options.validate = false;
+    step(m);  // consistent: passes
+    if (three) {
+      QVERIFY(!m.contacts3.empty());
+      m.contacts3[0].joint = 99;
+    } else {
+      QVERIFY(m.contacts.size() > 0);
+      m.contacts.joint[0] = 99;
+    }
+    QVERIFY_THROWS_EXCEPTION(std::logic_error, validate(m));
+    step(other.model());
+  }
+
+  // Every stage is timed into the model's profile, the joint law as 'interfaces' in 3D too.
+  void profileTimesEveryStage_data() { dimensions(); }
+  void profileTimesEveryStage() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    r.run(scene(three));
+    Profile p;
+    r.model().options.profile = &p;
+    run_cycles(r.model(), 20);
+    r.model().options.profile = nullptr;
+    QCOMPARE(p.cycles, uint64_t(20));
+    for (int s : {kStageContacts, kStageInterfaces, kStageMotion})
+      QVERIFY2(p.seconds[static_cast<size_t>(s)] > 0.0, stage_name(s));
+    QVERIFY(r.model().approx_bytes() > 1000.0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestCore)
+#include "test_core.moc"
