@@ -21,11 +21,9 @@ constexpr double kKn = 1e9, kWeight = 2500 * 10.0;  // a 1 m cube (2D: square) o
 
 // A 1 m block resting on a fixed slab under gravity -10 along y, on a joint of kn = ks = 1e9
 // Pa/m: a square in 2D, the same square extruded 1 m along z in 3D.
-std::string scene(bool three, const std::string& settings = "") {
-  const std::string common =
-      "material define rock density=2500\n"
-      "joint define j kn=1e9 ks=1e9 friction=40\njoint assign j\n" +
-      settings;
+std::string scene(bool three, const std::string& settings = "", const std::string& kn = "1e9") {
+  const std::string common = "material define rock density=2500\njoint define j kn=" + kn +
+                             " ks=" + kn + " friction=40\njoint assign j\n" + settings;
   const std::string slab = "-1,-1 2,-1 2,0 -1,0", block = "0,0 1,0 1,1 0,1";
   if (three)
     return "dimension 3\ntolerance 0.005\n" + common + "block prism " + slab +
@@ -223,6 +221,30 @@ class TestCore : public QObject {
     }
     QVERIFY_THROWS_EXCEPTION(std::logic_error, validate(m));
     step(other.model());
+  }
+
+  // A joint far too soft for its load (W / (kn L) = 0.25 m on kn = 1e5) stops the run once the
+  // overlap passes an eighth of the block's size, naming both blocks, in 2D and 3D alike.
+  void overlapTooGreatStopsTheRun_data() { dimensions(); }
+  void overlapTooGreatStopsTheRun() {
+    QFETCH(bool, three);
+    ScriptRun r;
+    try {
+      r.run(scene(three, "", "1e5") + "solve ratio=1e-6 cycles=20000");
+      QFAIL("the block settled 0.25 m into its base without a word");
+    } catch (const std::exception& e) {
+      const std::string msg = e.what();
+      qInfo("%s", msg.c_str());
+      QVERIFY(msg.find("contact overlap too great") != std::string::npos);
+      QVERIFY(msg.find("block 1 (group slab)") != std::string::npos);
+      QVERIFY(msg.find("block 2 (group top)") != std::string::npos);
+    }
+    // It stopped near the limit, not after falling through.
+    const double limit = 0.5 * 0.25 * (three ? std::sqrt(0.75) : std::sqrt(0.5));
+    const double sunk =
+        three ? -r.model().blocks3.body[1].position.y() + 0.5 : -r.model().blocks.y[1] + 0.5;
+    qInfo("sunk %.4f m, limit %.4f m", sunk, limit);
+    QVERIFY(sunk > limit && sunk < 1.5 * limit);
   }
 
   // Every stage is timed into the model's profile, the joint law as 'interfaces' in 3D too.

@@ -40,6 +40,13 @@ std::string find_overlap(const Model& m);
 // Cross-reference checks of the block and contact arrays; throws std::logic_error naming what
 // is inconsistent.
 void validate(const Model& m);
+// Overlaps beyond this share of the deepest plausible one (a quarter of the smaller block's
+// size) stop the run, 2D and 3D: past it a corner would soon lose its feature and fall through.
+constexpr double kOverlapLimit = 0.5;
+// Stops the run on an overlap of blocks a and b beyond `limit`, as UDEC's "contact overlap too
+// great" does: `where` is the place ("x=.., y=.."), `what` the features that touch.
+[[noreturn]] void throw_overlap(const Model& m, size_t a, size_t b, double overlap, double limit,
+                                const std::string& where, const std::string& what);
 // Throws the ModelError of a run whose block moved more than a tenth of its size in a step.
 [[noreturn]] void throw_diverged(const Model& m, int block_id);
 

@@ -9,7 +9,7 @@ namespace tessera {
 // Moves a contact's common plane with its blocks and rebuilds or follows its sub-contacts.
 void update_plane3(const Model& m, Contact3& c);
 // The joint law at each sub-contact, and the contact's resultant force and torques (on a; b
-// takes the opposite).
-void joint_forces3(const Model& m, Contact3& c);
+// takes the opposite). Returns the deepest overlap of its sub-contacts (0 if none overlaps).
+double joint_forces3(const Model& m, Contact3& c);
 
 }  // namespace tessera

@@ -159,27 +159,18 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
   }
 }
 
-// Overlaps beyond this share of the deepest plausible one (a quarter of the smaller block's
-// size) stop the run: past it a corner would soon lose its feature and fall through.
-constexpr double kOverlapLimit = 0.5;
-
 // Stops the run on contact i, as UDEC's "contact overlap too great" does.
 [[noreturn]] void throw_overlap(const Model& m, uint32_t i) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
-  std::ostringstream msg;
   const uint32_t a = C.a[i], b = C.b[i];
-  msg << "contact overlap too great at cycle " << m.cycle << ": " << m.block_label(a) << " and "
-      << m.block_label(b) << " overlap by " << -C.gap[i] << " m near x=" << C.point[i].x()
-      << ", y=" << C.point[i].y() << " (more than "
-      << kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])
-      << " m, an eighth of the smaller block's size; corner " << C.corner[i] - B.vert_begin[a] + 1
-      << " of block " << B.id[a] << " against the "
-      << (C.kind[i] == kCornerEdge ? "edge from vertex " : "corner ")
-      << C.feature[i] - B.vert_begin[b] + 1 << " of block " << B.id[b]
-      << "): the joint's normal stiffness is too low "
-         "for the load it carries, or the blocks were made overlapping";
-  throw ModelError(msg.str());
+  std::ostringstream where, what;
+  where << "x=" << C.point[i].x() << ", y=" << C.point[i].y();
+  what << "corner " << C.corner[i] - B.vert_begin[a] + 1 << " of block " << B.id[a]
+       << " against the " << (C.kind[i] == kCornerEdge ? "edge from vertex " : "corner ")
+       << C.feature[i] - B.vert_begin[b] + 1 << " of block " << B.id[b];
+  throw_overlap(m, a, b, -C.gap[i], kOverlapLimit * max_contact_depth(B, a, b), where.str(),
+                what.str());
 }
 
 // Per interface: the length of each contact, then the joint law for each contact, giving its

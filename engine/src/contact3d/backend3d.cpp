@@ -2,8 +2,10 @@
 // detection3.cpp) and rigid blocks with six degrees of freedom (rigid3d.cpp: central
 // differences for translation, the DRL splitting for rotation).
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "core/backend.hpp"
 #include "tessera/detection3.hpp"
@@ -33,19 +35,52 @@ void prepare3d(Model& m) {
   if (m.block_contact_begin.size() != B.size() + 1) build_adjacency3(m);
 }
 
-void each_contact(Model& m, void (*f)(const Model&, Contact3&)) {
+void geometry3d(Model& m) {
   parallel_for(
       m.contacts3.size(),
       [&](size_t c0, size_t c1) {
-        for (size_t i = c0; i < c1; ++i) f(m, m.contacts3[i]);
+        for (size_t i = c0; i < c1; ++i) update_plane3(m, m.contacts3[i]);
       },
       64);
 }
-void geometry3d(Model& m) {
-  each_contact(m, update_plane3);
+
+// Deepest plausible overlap between two blocks: a quarter of the smaller one's size (as 2D).
+double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
+  return 0.25 * std::min(B.bound_radius[a], B.bound_radius[b]);
 }
+
+// Stops the run on contact i's deepest sub-contact.
+[[noreturn]] void throw_overlap3(const Model& m, uint32_t i) {
+  const Contact3& c = m.contacts3[i];
+  const SubContact* deepest = &c.subs.front();
+  for (const SubContact& s : c.subs)
+    if (s.gap < deepest->gap) deepest = &s;
+  std::ostringstream where;
+  where << "x=" << deepest->point.x() << ", y=" << deepest->point.y()
+        << ", z=" << deepest->point.z();
+  throw_overlap(m, c.a, c.b, -deepest->gap, kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b),
+                where.str(), "a corner of the faces' overlap on their common plane");
+}
+
 void joint_forces3d(Model& m) {
-  each_contact(m, joint_forces3);
+  // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
+  std::atomic<uint32_t> too_deep{std::numeric_limits<uint32_t>::max()};
+  parallel_for(
+      m.contacts3.size(),
+      [&](size_t c0, size_t c1) {
+        for (size_t i = c0; i < c1; ++i) {
+          Contact3& c = m.contacts3[i];
+          const double deepest = joint_forces3(m, c);
+          if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b)) {
+            uint32_t seen = too_deep.load(std::memory_order_relaxed);
+            while (i < seen && !too_deep.compare_exchange_weak(seen, static_cast<uint32_t>(i))) {
+            }
+          }
+        }
+      },
+      64);
+  if (const uint32_t i = too_deep.load(); i != std::numeric_limits<uint32_t>::max())
+    throw_overlap3(m, i);
 }
 
 // Gravity plus contact forces, gathered in a fixed order per block; slave pieces hand theirs

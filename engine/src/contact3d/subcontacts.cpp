@@ -248,7 +248,7 @@ void update_plane3(const Model& m, Contact3& c) {
   }
 }
 
-void joint_forces3(const Model& m, Contact3& c) {
+double joint_forces3(const Model& m, Contact3& c) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   const Vec3 n = c.normal;
@@ -265,7 +265,9 @@ void joint_forces3(const Model& m, Contact3& c) {
   const Vec3& wb = B.omega[mb_body];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
+  double deepest = 0.0;
   for (SubContact& s : c.subs) {
+    deepest = std::max(deepest, -s.gap);
     const double overlap = without_roundoff(-s.gap, roundoff);
     const double un = overlap + s.dilation;
     if (stays_open(un, s.fn, s.flags)) {
@@ -298,6 +300,7 @@ void joint_forces3(const Model& m, Contact3& c) {
   // hundredth of the tolerance.
   c.drift += dt * ((ba.velocity - bb.velocity).norm() + wa.norm() * B.bound_radius[a] +
                    wb.norm() * B.bound_radius[b]);
+  return deepest;
 }
 
 }  // namespace tessera

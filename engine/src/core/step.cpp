@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "backend.hpp"
 #include "core/stage_timer.hpp"
@@ -131,6 +132,17 @@ std::string find_overlap(const Model& m) {
 
 void validate(const Model& m) {
   backend(m).validate(m);
+}
+
+void throw_overlap(const Model& m, size_t a, size_t b, double overlap, double limit,
+                   const std::string& where, const std::string& what) {
+  std::ostringstream msg;
+  msg << "contact overlap too great at cycle " << m.cycle << ": " << m.block_label(a) << " and "
+      << m.block_label(b) << " overlap by " << overlap << " m near " << where << " (more than "
+      << limit << " m, an eighth of the smaller block's size; " << what
+      << "): the joint's normal stiffness is too low for the load it carries, or the blocks were "
+         "made overlapping";
+  throw ModelError(msg.str());
 }
 
 void throw_diverged(const Model& m, int block_id) {
