@@ -97,6 +97,8 @@ void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
       advance(B.moment[b], B.omega[b], B.inv_inertia[b], B.inertia[b], fix & kFixRot,
               B.fixed_omega[b]);
       out.unbalanced[b] = std::sqrt(ub_force);
+      out.moves[b] = B.inv_mass[b] > 0.0 && (fix & (kFixX | kFixY)) != (kFixX | kFixY);
+      out.applied[b] = out.moves[b] ? B.applied[b] : 0.0;
       B.x[b] += dt * B.vx[b];
       B.y[b] += dt * B.vy[b];
       B.theta[b] += dt * B.omega[b];
@@ -111,15 +113,6 @@ void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
                     B.bound_radius[b];
     }
   });
-}
-
-bool moves2d(const Model& m, size_t b) {
-  const Blocks& B = m.blocks;
-  return B.inv_mass[b] > 0.0 && (B.fixity[b] & (kFixX | kFixY)) != (kFixX | kFixY);
-}
-
-double applied2d(const Model& m, size_t b) {
-  return m.blocks.applied[b];
 }
 
 // Each block: the joint length in touch is at most its perimeter, at most bound_radius away.
@@ -148,11 +141,17 @@ double kinetic_energy2d(const Model& m) {
 }  // namespace
 
 const Backend& backend2d() {
-  static const Backend be{prepare2d,         detect_contacts,  update_contact_geometry,
-                          update_interfaces, resultants2d,     power2d,
-                          integrate2d,       moves2d,          applied2d,
-                          timestep2d,        kinetic_energy2d, find_overlap2d,
-                          validate2d};
+  static const Backend be{.prepare = prepare2d,
+                          .detect = detect_contacts,
+                          .geometry = update_contact_geometry,
+                          .joint_forces = update_interfaces,
+                          .resultants = resultants2d,
+                          .power = power2d,
+                          .integrate = integrate2d,
+                          .timestep = timestep2d,
+                          .kinetic_energy = kinetic_energy2d,
+                          .find_overlap = find_overlap2d,
+                          .validate = validate2d};
   return be;
 }
 

@@ -143,6 +143,8 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
     for (size_t b = b0; b < b1; ++b) {
       RigidBody3& body = B.body[b];
       const uint8_t fix = B.fixity[b];
+      out.moves[b] = body.mass > 0.0 && (fix & 7) != 7;
+      out.applied[b] = out.moves[b] ? B.applied[b] : 0.0;
       if (B.is_slave(b)) continue;  // moved with its master below
       if (body.mass <= 0.0 || fix == kFix3All) {
         // Held: moves at its prescribed velocity.
@@ -188,15 +190,6 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   });
 }
 
-bool moves3d(const Model& m, size_t b) {
-  const Blocks3& B = m.blocks3;
-  return B.body[b].mass > 0.0 && (B.fixity[b] & 7) != 7;
-}
-
-double applied3d(const Model& m, size_t b) {
-  return m.blocks3.applied[b];
-}
-
 // Each body: the joint area in touch is at most its surface (all its pieces'), at most
 // bound_radius away.
 double timestep3d(const Model& m, double k) {
@@ -224,10 +217,17 @@ double kinetic_energy3d(const Model& m) {
 }  // namespace
 
 const Backend& backend3d() {
-  static const Backend be{prepare3d,    detect_contacts3, geometry3d,       joint_forces3d,
-                          resultants3d, power3d,          integrate3d,      moves3d,
-                          applied3d,    timestep3d,       kinetic_energy3d, find_overlap3,
-                          validate3d};
+  static const Backend be{.prepare = prepare3d,
+                          .detect = detect_contacts3,
+                          .geometry = geometry3d,
+                          .joint_forces = joint_forces3d,
+                          .resultants = resultants3d,
+                          .power = power3d,
+                          .integrate = integrate3d,
+                          .timestep = timestep3d,
+                          .kinetic_energy = kinetic_energy3d,
+                          .find_overlap = find_overlap3,
+                          .validate = validate3d};
   return be;
 }
 

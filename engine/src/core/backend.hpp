@@ -15,7 +15,12 @@ struct BlockMotion {
   std::vector<double> unbalanced;  // norm of the unbalanced force (translation)
   std::vector<double> drift;       // largest displacement of a point since the last detection
   std::vector<double> jump;        // step's displacement as a share of the block's size
-  void reset(size_t n) { unbalanced.assign(n, 0.0), drift.assign(n, 0.0), jump.assign(n, 0.0); }
+  std::vector<double> applied;     // load carried, if the block moves under load (else 0)
+  std::vector<uint8_t> moves;      // whether it moves under load (counts in the ratio)
+  void reset(size_t n) {
+    unbalanced.assign(n, 0.0), drift.assign(n, 0.0), jump.assign(n, 0.0);
+    applied.assign(n, 0.0), moves.assign(n, 0);
+  }
 };
 
 // Power of the unbalanced forces and twice the kinetic energy over free degrees of freedom
@@ -39,9 +44,6 @@ struct Backend {
   Power (*power)(const Model& m);
   // Damping and central-difference integration of every rigid block.
   void (*integrate)(Model& m, const Damping& d, BlockMotion& out);
-  // Whether block b moves under load (counts in the unbalanced-force ratio), and its load.
-  bool (*moves)(const Model& m, size_t b);
-  double (*applied)(const Model& m, size_t b);
   // Stable step of the rigid blocks on joints of stiffness k (Pa/m); infinity if none moves.
   double (*timestep)(const Model& m, double k);
   double (*kinetic_energy)(const Model& m);

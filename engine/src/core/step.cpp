@@ -18,19 +18,18 @@ namespace {
 
 // Convergence measures over the blocks that move under load, and the checks that the run has
 // neither diverged nor drifted far enough to need a detection pass.
-void measure_motion(Model& m, const Backend& be, const BlockMotion& bm, const ZoneMotion& zm) {
+void measure_motion(Model& m, const BlockMotion& bm, const ZoneMotion& zm) {
   const size_t n = m.block_count();
   size_t free_blocks = 0, worst = 0;
   double max_ub = 0.0, max_drift = 0.0;
   for (size_t b = 0; b < n; ++b) {
     max_drift = std::max(max_drift, bm.drift[b]);
     if (!(bm.jump[b] <= bm.jump[worst])) worst = b;
-    if (!be.moves(m, b)) continue;
+    if (!bm.moves[b]) continue;
     ++free_blocks;
     max_ub = std::max(max_ub, bm.unbalanced[b]);
   }
-  const double sum_applied =
-      deterministic_sum(n, [&](size_t b) { return be.moves(m, b) ? be.applied(m, b) : 0.0; });
+  const double sum_applied = deterministic_sum(n, [&](size_t b) { return bm.applied[b]; });
   m.max_unbalanced = max_ub;
   m.mean_applied = free_blocks ? sum_applied / static_cast<double>(free_blocks) : 0.0;
   m.ratio = m.mean_applied > 0.0 ? max_ub / m.mean_applied : 0.0;
@@ -86,7 +85,7 @@ void step(Model& m) {
     StageTimer t(run, kStageZones);
     zones = zone_stage(m, damping);
   }
-  measure_motion(m, be, motion, zones);
+  measure_motion(m, motion, zones);
   if (run.validate) be.validate(m);
   m.time += m.dt;
   ++m.cycle;
