@@ -11,6 +11,11 @@ struct Model;
 // The stiffest joint's spring, max(kn, ks) over the property sets (Pa/m): the one stiffness
 // every stable-step estimate uses.
 double stiffest_joint(const Model& m);
+// The stiffest joint's two springs together, max(kn + ks) (Pa/m), for an outline node of a
+// deformable block: at a corner of its block, the normal spring of one edge's contact and the
+// shear spring of the other's act along the same direction (deformable.cpp's node steps). A rigid
+// block's perimeter bound needs only stiffest_joint: each face adds kn or ks along a direction.
+double stiffest_joint_pair(const Model& m);
 // The step the model cycles at.
 double compute_timestep(const Model& m);
 

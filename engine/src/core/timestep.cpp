@@ -15,6 +15,12 @@ double stiffest_joint(const Model& m) {
   return k;
 }
 
+double stiffest_joint_pair(const Model& m) {
+  double k = 0.0;
+  for (const JointProperties& j : m.joints) k = std::max(k, j.kn + j.ks);
+  return k;
+}
+
 double compute_timestep(const Model& m) {
   if (m.settings.dt_fixed > 0.0) return m.settings.dt_fixed;
   double dt = backend(m).timestep(m, stiffest_joint(m));

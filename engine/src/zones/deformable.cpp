@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tessera/geometry.hpp"
+#include "tessera/timestep.hpp"
 
 namespace tessera {
 
@@ -267,8 +268,7 @@ std::vector<double> node_timesteps(const Model& m) {
     const double s = zone_timestep(c, z);
     for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
   }
-  double kmax = 0;
-  for (const auto& j : m.joints) kmax = std::max(kmax, j.kn + j.ks);
+  const double kmax = stiffest_joint_pair(m);
   const Blocks& B = m.blocks;
   if (kmax > 0)
     for (size_t b = 0; b < B.size(); ++b) {
