@@ -5,16 +5,12 @@
 #include <chrono>
 #include <iostream>
 
-#include "tessera/common_plane.hpp"
 #include "tessera/detection.hpp"
 #include "tessera/detection3.hpp"
 #include "tessera/generators.hpp"
 #include "tessera/generators3.hpp"
-#include "tessera/interfaces.hpp"
 #include "tessera/parallel.hpp"
 #include "tessera/step.hpp"
-#include "tessera/subcontacts.hpp"
-#include "tessera/timestep.hpp"
 
 using namespace tessera;
 

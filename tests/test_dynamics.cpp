@@ -5,10 +5,7 @@
 #include <cmath>
 
 #include "support.hpp"
-#include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
 #include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

@@ -5,13 +5,9 @@
 #include <numbers>
 #include <numeric>
 
-#include "tessera/common_plane.hpp"
 #include "tessera/detection.hpp"
 #include "tessera/detection3.hpp"
-#include "tessera/interfaces.hpp"
 #include "tessera/step.hpp"
-#include "tessera/subcontacts.hpp"
-#include "tessera/timestep.hpp"
 
 namespace tessera {
 

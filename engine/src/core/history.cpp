@@ -5,11 +5,8 @@
 #include <cstdio>
 #include <utility>
 
-#include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
 #include "tessera/model.hpp"
 #include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
 
 namespace tessera {
 

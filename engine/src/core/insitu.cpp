@@ -3,7 +3,6 @@
 #include "tessera/detection.hpp"
 #include "tessera/interfaces.hpp"
 #include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
 
 namespace tessera {
 

@@ -32,10 +32,8 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 #include <numbers>
 
 #include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
 #include "tessera/random.hpp"
 #include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
 
 namespace tessera {
 

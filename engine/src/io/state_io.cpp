@@ -10,9 +10,6 @@
 
 #include "tessera/deformable.hpp"
 #include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
-#include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
 
 namespace tessera {
 

@@ -4,13 +4,11 @@
 #include <tuple>
 
 #include "tessera/common_plane.hpp"
-#include "tessera/detection3.hpp"
 #include "tessera/expr.hpp"
 #include "tessera/generators.hpp"
 #include "tessera/generators3.hpp"
 #include "tessera/random.hpp"
 #include "tessera/script.hpp"
-#include "tessera/subcontacts.hpp"
 
 namespace tessera {
 
