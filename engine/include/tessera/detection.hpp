@@ -9,8 +9,6 @@ namespace tessera {
 
 // Detection pass: broad phase, corner search, merge with existing contacts.
 void detect_contacts(Model& m);
-// Rebuilds the per-block contact lists from the contact array.
-void build_adjacency(Model& m);
 // First pair of blocks that overlap beyond the contact tolerance, as a message; empty if none.
 std::string find_overlap2d(const Model& m);
 // Cross-reference checks of the 2D block and contact arrays (contact2d/validate.cpp).

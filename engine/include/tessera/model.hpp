@@ -112,6 +112,10 @@ struct Model {
   double bond_gap() const { return 1e-3 * tolerance(); }
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
   void touch() { dt_dirty = true, detection_due = true; }
+  // Rebuilds the per-block contact lists from each contact's two blocks (2D or 3D contacts).
+  void build_block_contacts();
+  // What is wrong with the per-block contact lists, or empty if they match the contacts.
+  std::string block_contacts_problem() const;
   // Roughly the memory the model takes (its large arrays, 2D and 3D), in bytes.
   double approx_bytes() const;
 };

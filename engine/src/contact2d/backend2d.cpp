@@ -24,7 +24,7 @@ void prepare2d(Model& m) {
       throw ModelError("block " + std::to_string(m.blocks.id[b]) +
                        " has no mass: give it a material with a density");
   if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
-  if (m.block_contact_begin.size() != m.blocks.size() + 1) build_adjacency(m);
+  if (m.block_contact_begin.size() != m.blocks.size() + 1) m.build_block_contacts();
 }
 
 // Gravity plus contact forces, gathered in a fixed order per block.

@@ -214,26 +214,11 @@ void detect_contacts(Model& m) {
   }
   if (next.size() > 0) next.pair_begin.push_back(static_cast<uint32_t>(next.size()));
   m.contacts = std::move(next);
-  build_adjacency(m);
+  m.build_block_contacts();
   m.det_x = B.x, m.det_y = B.y, m.det_theta = B.theta;
   m.det_node = m.continuum.pos;
   m.detection_due = false;
   ++m.detection_passes;
-}
-
-void build_adjacency(Model& m) {
-  const Contacts& C = m.contacts;
-  const size_t n = m.blocks.size();
-  std::vector<uint32_t> count(n + 1, 0);
-  for (size_t i = 0; i < C.size(); ++i) ++count[C.a[i] + 1], ++count[C.b[i] + 1];
-  for (size_t b = 0; b < n; ++b) count[b + 1] += count[b];
-  m.block_contact_begin = count;
-  m.block_contacts.assign(count[n], 0);
-  std::vector<uint32_t> fill(count.begin(), count.end() - 1);
-  for (uint32_t i = 0; i < C.size(); ++i) {
-    m.block_contacts[fill[C.a[i]]++] = i * 2;
-    m.block_contacts[fill[C.b[i]]++] = i * 2 + 1;
-  }
 }
 
 std::string find_overlap2d(const Model& m) {

@@ -32,7 +32,7 @@ void prepare3d(Model& m) {
                              ? B.body[b].angular_velocity()
                              : B.fixed_w[b];
   if (m.det_pos3.size() != B.size()) m.detection_due = true;
-  if (m.block_contact_begin.size() != B.size() + 1) build_adjacency3(m);
+  if (m.block_contact_begin.size() != B.size() + 1) m.build_block_contacts();
 }
 
 void geometry3d(Model& m) {

@@ -57,21 +57,6 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase3(const std::vector<Box3>&
 
 }  // namespace
 
-void build_adjacency3(Model& m) {
-  const auto& C = m.contacts3;
-  const size_t n = m.blocks3.size();
-  std::vector<uint32_t> count(n + 1, 0);
-  for (const Contact3& c : C) ++count[c.a + 1], ++count[c.b + 1];
-  for (size_t b = 0; b < n; ++b) count[b + 1] += count[b];
-  m.block_contact_begin = count;
-  m.block_contacts.assign(count[n], 0);
-  std::vector<uint32_t> fill(count.begin(), count.end() - 1);
-  for (uint32_t i = 0; i < C.size(); ++i) {
-    m.block_contacts[fill[C[i].a]++] = i * 2;
-    m.block_contacts[fill[C[i].b]++] = i * 2 + 1;
-  }
-}
-
 void detect_contacts3(Model& m) {
   const Blocks3& B = m.blocks3;
   const double tol = m.tolerance();
@@ -105,7 +90,7 @@ void detect_contacts3(Model& m) {
     c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
   }
   m.contacts3 = std::move(next);
-  build_adjacency3(m);
+  m.build_block_contacts();
   m.det_pos3.resize(B.size()), m.det_q3.resize(B.size());
   for (size_t b = 0; b < B.size(); ++b)
     m.det_pos3[b] = B.body[b].position, m.det_q3[b] = B.body[b].orientation;

@@ -51,14 +51,8 @@ void validate3d(const Model& m) {
       require(finite(s.point) && std::isfinite(s.area) && s.area >= 0.0 && finite(s.force),
               who + " has a sub-contact that is not finite");
   }
-  require(m.block_contact_begin.size() == n + 1 && m.block_contact_begin[n] == 2 * C.size(),
-          "per-block contact lists do not match the contacts");
-  for (size_t b = 0; b < n; ++b)
-    for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
-      const uint32_t i = m.block_contacts[k] >> 1;
-      require(i < C.size() && ((m.block_contacts[k] & 1) ? C[i].b : C[i].a) == b,
-              "per-block contact list of block " + std::to_string(B.id[b]) + " is wrong");
-    }
+  const std::string lists = m.block_contacts_problem();
+  require(lists.empty(), lists);
 }
 
 }  // namespace tessera

@@ -50,6 +50,38 @@ double Model::tolerance() const {
 
 namespace tessera {
 
+void Model::build_block_contacts() {
+  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.size();
+  const auto a_of = [&](size_t i) { return dim == 3 ? contacts3[i].a : contacts.a[i]; };
+  const auto b_of = [&](size_t i) { return dim == 3 ? contacts3[i].b : contacts.b[i]; };
+  std::vector<uint32_t> count(n + 1, 0);
+  for (size_t i = 0; i < nc; ++i) ++count[a_of(i) + 1], ++count[b_of(i) + 1];
+  for (size_t b = 0; b < n; ++b) count[b + 1] += count[b];
+  block_contact_begin = count;
+  block_contacts.assign(count[n], 0);
+  std::vector<uint32_t> fill(count.begin(), count.end() - 1);
+  for (uint32_t i = 0; i < nc; ++i) {
+    block_contacts[fill[a_of(i)]++] = i * 2;
+    block_contacts[fill[b_of(i)]++] = i * 2 + 1;
+  }
+}
+
+std::string Model::block_contacts_problem() const {
+  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.size();
+  if (block_contact_begin.size() != n + 1 || block_contact_begin[n] != 2 * nc)
+    return "per-block contact lists do not match the contacts";
+  for (size_t b = 0; b < n; ++b)
+    for (uint32_t k = block_contact_begin[b]; k < block_contact_begin[b + 1]; ++k) {
+      const uint32_t i = block_contacts[k] >> 1;
+      const bool side_b = block_contacts[k] & 1;
+      const uint32_t owner = i >= nc    ? UINT32_MAX
+                             : dim == 3 ? (side_b ? contacts3[i].b : contacts3[i].a)
+                                        : (side_b ? contacts.b[i] : contacts.a[i]);
+      if (owner != b) return "per-block contact list of " + block_label(b) + " is wrong";
+    }
+  return {};
+}
+
 double Model::approx_bytes() const {
   double subs = 0.0;
   for (const Contact3& c : contacts3) subs += static_cast<double>(c.subs.size());

@@ -181,7 +181,7 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   m.contacts.clear();
   m.det_x.clear();
   m.touch();
-  build_adjacency(m);
+  m.build_block_contacts();
 }
 
 CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts,
@@ -284,7 +284,7 @@ void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
   m.touch();
-  build_adjacency(m);
+  m.build_block_contacts();
 }
 
 }  // namespace tessera

@@ -263,7 +263,7 @@ Model restore_state(const std::string& path) {
   m.blocks.world_edge_dir.resize(m.blocks.local_vertex.size());
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
   update_deformable_world(m);
-  build_adjacency(m);
+  m.build_block_contacts();
   return m;
 }
 
