@@ -4,11 +4,11 @@
 #include "tessera/interfaces.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
+#include "core/backend.hpp"
 #include "tessera/contact_geometry.hpp"
 #include "tessera/deformable.hpp"
 #include "tessera/parallel.hpp"
@@ -185,7 +185,7 @@ void update_interfaces(Model& m) {
   const double merge = 0.25 * m.settings.rounding;
   const double roundoff = m.roundoff_gap();
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
-  std::atomic<uint32_t> too_deep{std::numeric_limits<uint32_t>::max()};
+  FirstFlagged too_deep;
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
@@ -254,11 +254,7 @@ void update_interfaces(Model& m) {
               continue;
             }
             const double overlap = without_roundoff(-C.gap[i] + C.closure[i], roundoff);
-            if (-C.gap[i] > kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])) {
-              uint32_t seen = too_deep.load(std::memory_order_relaxed);
-              while (i < seen && !too_deep.compare_exchange_weak(seen, i)) {
-              }
-            }
+            if (-C.gap[i] > kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])) too_deep.flag(i);
             const double un = overlap + C.dilation[i];
             if (stays_open(un, C.fn[i], C.flags[i])) {
               C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
@@ -290,8 +286,7 @@ void update_interfaces(Model& m) {
         }
       },
       64);
-  if (const uint32_t i = too_deep.load(); i != std::numeric_limits<uint32_t>::max())
-    throw_overlap(m, i);
+  if (too_deep.any()) throw_overlap(m, too_deep.index());
 }
 
 void update_contact_geometry(Model& m) {

@@ -2,7 +2,6 @@
 // detection3.cpp) and rigid blocks with six degrees of freedom (rigid3d.cpp: central
 // differences for translation, the DRL splitting for rotation).
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -64,23 +63,19 @@ double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
 
 void joint_forces3d(Model& m) {
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
-  std::atomic<uint32_t> too_deep{std::numeric_limits<uint32_t>::max()};
+  FirstFlagged too_deep;
   parallel_for(
       m.contacts3.size(),
       [&](size_t c0, size_t c1) {
         for (size_t i = c0; i < c1; ++i) {
           Contact3& c = m.contacts3[i];
           const double deepest = joint_forces3(m, c);
-          if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b)) {
-            uint32_t seen = too_deep.load(std::memory_order_relaxed);
-            while (i < seen && !too_deep.compare_exchange_weak(seen, static_cast<uint32_t>(i))) {
-            }
-          }
+          if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b))
+            too_deep.flag(static_cast<uint32_t>(i));
         }
       },
       64);
-  if (const uint32_t i = too_deep.load(); i != std::numeric_limits<uint32_t>::max())
-    throw_overlap3(m, i);
+  if (too_deep.any()) throw_overlap3(m, too_deep.index());
 }
 
 // Gravity plus contact forces, gathered in a fixed order per block; slave pieces hand theirs

@@ -2,6 +2,9 @@
 // forces, and rigid-body motion with 3 (2D) or 6 (3D) degrees of freedom. Internal to the engine.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,23 @@ struct BlockMotion {
     unbalanced.assign(n, 0.0), drift.assign(n, 0.0), jump.assign(n, 0.0);
     applied.assign(n, 0.0), moves.assign(n, 0);
   }
+};
+
+// The lowest index any thread flagged: the first offender, the same at every thread count (the
+// contact a run stops on for too great an overlap, 2D and 3D).
+class FirstFlagged {
+ public:
+  void flag(uint32_t i) {
+    uint32_t seen = index_.load(std::memory_order_relaxed);
+    while (i < seen && !index_.compare_exchange_weak(seen, i)) {
+    }
+  }
+  bool any() const { return index_.load() != kNone; }
+  uint32_t index() const { return index_.load(); }
+
+ private:
+  static constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+  std::atomic<uint32_t> index_{kNone};
 };
 
 // Power of the unbalanced forces and twice the kinetic energy over free degrees of freedom

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "backend.hpp"
+#include "core/backend.hpp"
 #include "core/stage_timer.hpp"
 #include "tessera/deformable.hpp"
 #include "tessera/parallel.hpp"
