@@ -1,16 +1,12 @@
 // Cross-reference checks of a 3D model's arrays, run after each cycle when validation is on.
 #include <cmath>
-#include <stdexcept>
-#include <string>
 
+#include "core/validation.hpp"
 #include "tessera/model.hpp"
 
 namespace tessera {
 
 namespace {
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::logic_error("validation failed: " + what);
-}
 bool finite(const Vec3& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
@@ -25,34 +21,33 @@ void validate3d(const Model& m) {
   require(B.vert_begin.size() == n + 1 && B.face_begin.size() == n + 1,
           "vertex or face offsets do not match the block count");
   for (size_t b = 0; b < n; ++b) {
-    const std::string who = "block " + std::to_string(B.id[b]);
-    require(B.vert_begin[b + 1] - B.vert_begin[b] >= 4, who + " has fewer than 4 vertices");
-    require(B.face_begin[b + 1] - B.face_begin[b] >= 4, who + " has fewer than 4 faces");
+    require(B.vert_begin[b + 1] - B.vert_begin[b] >= 4, "block", B.id[b],
+            "has fewer than 4 vertices");
+    require(B.face_begin[b + 1] - B.face_begin[b] >= 4, "block", B.id[b], "has fewer than 4 faces");
     require(B.master[b] >= 0 && static_cast<size_t>(B.master[b]) < n &&
                 B.master[static_cast<size_t>(B.master[b])] == B.master[b],
-            who + " names a wrong master body");
-    require(finite(B.body[b].position) && finite(B.body[b].velocity),
-            who + " position or velocity is not finite");
+            "block", B.id[b], "names a wrong master body");
+    require(finite(B.body[b].position) && finite(B.body[b].velocity), "block", B.id[b],
+            "position or velocity is not finite");
   }
   const auto& C = m.contacts3;
   for (size_t i = 0; i < C.size(); ++i) {
-    const std::string who = "contact " + std::to_string(i);
     const Contact3& c = C[i];
-    require(c.a < c.b && c.b < n, who + " names a wrong block");
-    require(i == 0 || std::make_pair(C[i - 1].a, C[i - 1].b) < std::make_pair(c.a, c.b),
-            who + " is out of order");
-    require(c.joint < m.joints.size(), who + " has no joint properties");
+    require(c.a < c.b && c.b < n, "contact", i, "names a wrong block");
+    require(i == 0 || std::make_pair(C[i - 1].a, C[i - 1].b) < std::make_pair(c.a, c.b), "contact",
+            i, "is out of order");
+    require(c.joint < m.joints.size(), "contact", i, "has no joint properties");
     require(c.face_a >= B.face_begin[c.a] && c.face_a < B.face_begin[c.a + 1] &&
                 c.face_b >= B.face_begin[c.b] && c.face_b < B.face_begin[c.b + 1],
-            who + " faces a face of another block");
-    require(finite(c.force) && finite(c.torque_a) && finite(c.torque_b),
-            who + " force is not finite");
+            "contact", i, "faces a face of another block");
+    require(finite(c.force) && finite(c.torque_a) && finite(c.torque_b), "contact", i,
+            "force is not finite");
     for (const SubContact& s : c.subs)
       require(finite(s.point) && std::isfinite(s.area) && s.area >= 0.0 && finite(s.force),
-              who + " has a sub-contact that is not finite");
+              "contact", i, "has a sub-contact that is not finite");
   }
   const std::string lists = m.block_contacts_problem();
-  require(lists.empty(), lists);
+  require(lists.empty(), lists.c_str());
 }
 
 }  // namespace tessera
