@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "tessera/parallel.hpp"
-#include "tessera/script.hpp"
-#include "tessera/state_io.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/io/state_io.hpp"
+#include "tessera/script/script.hpp"
 #include "tessera/ui/figure_writer.hpp"
 
 namespace fs = std::filesystem;

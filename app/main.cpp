@@ -7,7 +7,7 @@
 #include <cstdlib>
 
 #include "batch.hpp"
-#include "tessera/parallel.hpp"
+#include "tessera/core/parallel.hpp"
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/vtk_view.hpp"
 

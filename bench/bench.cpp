@@ -5,12 +5,12 @@
 #include <chrono>
 #include <iostream>
 
-#include "tessera/detection.hpp"
-#include "tessera/detection3.hpp"
-#include "tessera/generators.hpp"
-#include "tessera/generators3.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/contact3d/detection3.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/generation/generators.hpp"
+#include "tessera/generation/generators3.hpp"
 
 using namespace tessera;
 

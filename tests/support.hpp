@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "tessera/script.hpp"
+#include "tessera/script/script.hpp"
 
 namespace tessera::test {
 

@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "support.hpp"
-#include "tessera/cutting3.hpp"
+#include "tessera/generation/cutting3.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "tessera/blocks.hpp"
-#include "tessera/continuum.hpp"
+#include "tessera/contact2d/blocks.hpp"
+#include "tessera/zones/continuum.hpp"
 
 using namespace tessera;
 

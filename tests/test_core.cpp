@@ -7,10 +7,10 @@
 #include <iterator>
 
 #include "support.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/state_io.hpp"
-#include "tessera/step.hpp"
-#include "tessera/timestep.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/core/timestep.hpp"
+#include "tessera/io/state_io.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

@@ -2,8 +2,8 @@
 #include <QtTest>
 
 #include "support.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/state_io.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/io/state_io.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "support.hpp"
-#include "tessera/step.hpp"
+#include "tessera/core/step.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

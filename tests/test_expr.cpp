@@ -1,7 +1,7 @@
 // Script arithmetic: precedence, variables, functions in degrees, and errors that say why.
 #include <QtTest>
 
-#include "tessera/expr.hpp"
+#include "tessera/script/expr.hpp"
 
 using namespace tessera;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "support.hpp"
-#include "tessera/parallel.hpp"
+#include "tessera/core/parallel.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "tessera/blocks.hpp"
-#include "tessera/geometry.hpp"
+#include "tessera/contact2d/blocks.hpp"
+#include "tessera/core/geometry.hpp"
 
 using namespace tessera;
 

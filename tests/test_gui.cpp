@@ -14,7 +14,7 @@
 #include <QTimer>
 #include <thread>
 
-#include "tessera/script.hpp"
+#include "tessera/script/script.hpp"
 #include "tessera/ui/colour_map.hpp"
 #include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/console_widget.hpp"

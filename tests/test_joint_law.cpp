@@ -2,8 +2,8 @@
 #include <QtTest>
 #include <cmath>
 
-#include "tessera/contacts.hpp"
-#include "tessera/joint_law.hpp"
+#include "tessera/contact2d/contacts.hpp"
+#include "tessera/core/joint_law.hpp"
 
 using namespace tessera;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "tessera/rigid3d.hpp"
+#include "tessera/contact3d/rigid3d.hpp"
 
 using namespace tessera;
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "tessera/zone_model.hpp"
-#include "tessera/zoning.hpp"
+#include "tessera/zones/zone_model.hpp"
+#include "tessera/zones/zoning.hpp"
 
 using namespace tessera;
 

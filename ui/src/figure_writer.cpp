@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "tessera/model.hpp"
-#include "tessera/script.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/script/script.hpp"
 
 namespace tessera::ui {
 

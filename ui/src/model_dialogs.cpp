@@ -6,7 +6,7 @@
 #include <QStatusBar>
 #include <algorithm>
 
-#include "tessera/generators.hpp"
+#include "tessera/generation/generators.hpp"
 #include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/main_window.hpp"

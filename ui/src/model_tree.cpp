@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "tessera/blocks.hpp"
-#include "tessera/blocks3.hpp"
-#include "tessera/contacts.hpp"
+#include "tessera/contact2d/blocks.hpp"
+#include "tessera/contact2d/contacts.hpp"
+#include "tessera/contact3d/blocks3.hpp"
 
 namespace tessera::ui {
 

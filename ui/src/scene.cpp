@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "scene3d.hpp"
-#include "tessera/contacts.hpp"
-#include "tessera/continuum.hpp"
+#include "tessera/contact2d/contacts.hpp"
+#include "tessera/zones/continuum.hpp"
 
 namespace tessera::ui {
 

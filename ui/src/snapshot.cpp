@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <map>
 
-#include "tessera/deformable.hpp"
-#include "tessera/model.hpp"
-#include "tessera/script.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/script/script.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera::ui {
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "tessera/script.hpp"
-#include "tessera/state_io.hpp"
+#include "tessera/io/state_io.hpp"
+#include "tessera/script/script.hpp"
 #include "tessera/ui/figure_writer.hpp"
 
 namespace tessera::ui {

@@ -5,10 +5,10 @@
 #include <limits>
 
 #include "core/backend.hpp"
-#include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/contact2d/interfaces.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

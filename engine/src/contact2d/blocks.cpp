@@ -1,4 +1,4 @@
-#include "tessera/blocks.hpp"
+#include "tessera/contact2d/blocks.hpp"
 
 #include <algorithm>
 #include <cmath>

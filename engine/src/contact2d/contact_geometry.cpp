@@ -1,8 +1,8 @@
-#include "tessera/contact_geometry.hpp"
+#include "tessera/contact2d/contact_geometry.hpp"
 
 #include <cmath>
 
-#include "tessera/contacts.hpp"
+#include "tessera/contact2d/contacts.hpp"
 
 namespace tessera {
 

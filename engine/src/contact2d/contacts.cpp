@@ -1,4 +1,4 @@
-#include "tessera/contacts.hpp"
+#include "tessera/contact2d/contacts.hpp"
 
 namespace tessera {
 

@@ -1,15 +1,15 @@
 // Contact detection pass: cell-grid broad phase on bounding boxes, rounded-corner search for
 // each candidate pair, and a merge that keeps the history of contacts that persist.
-#include "tessera/detection.hpp"
+#include "tessera/contact2d/detection.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <tuple>
 
-#include "tessera/contact_geometry.hpp"
-#include "tessera/deformable.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/contact_geometry.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

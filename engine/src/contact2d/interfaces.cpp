@@ -1,7 +1,7 @@
 // The 2D contact stages: each corner's feature, gap, normal and point (rounded corners,
 // chapter 5.2.1), then per interface the contacts' shares of joint length and the joint law,
 // giving each contact's force.
-#include "tessera/interfaces.hpp"
+#include "tessera/contact2d/interfaces.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 #include <sstream>
 
 #include "core/backend.hpp"
-#include "tessera/contact_geometry.hpp"
-#include "tessera/deformable.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/contact_geometry.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "core/validation.hpp"
-#include "tessera/detection.hpp"
+#include "tessera/contact2d/detection.hpp"
 
 namespace tessera {
 

@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "core/backend.hpp"
-#include "tessera/detection3.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/step.hpp"
-#include "tessera/subcontacts.hpp"
+#include "tessera/contact3d/detection3.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

@@ -1,4 +1,4 @@
-#include "tessera/blocks3.hpp"
+#include "tessera/contact3d/blocks3.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

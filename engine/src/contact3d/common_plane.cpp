@@ -1,10 +1,10 @@
 // The common plane of two convex blocks: the separating-axis candidates and the best of them.
-#include "tessera/common_plane.hpp"
+#include "tessera/contact3d/common_plane.hpp"
 
 #include <cmath>
 
-#include "tessera/detection3.hpp"
-#include "tessera/subcontacts.hpp"
+#include "tessera/contact3d/detection3.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
 
 namespace tessera {
 

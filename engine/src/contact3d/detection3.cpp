@@ -1,12 +1,12 @@
 // Contact detection of 3D blocks: bounding boxes swept along the axis of widest spread, then
 // the common plane of each close pair.
-#include "tessera/detection3.hpp"
+#include "tessera/contact3d/detection3.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-#include "tessera/common_plane.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact3d/common_plane.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

@@ -1,4 +1,4 @@
-#include "tessera/polyhedron.hpp"
+#include "tessera/contact3d/polyhedron.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <map>

@@ -1,4 +1,4 @@
-#include "tessera/rigid3d.hpp"
+#include "tessera/contact3d/rigid3d.hpp"
 
 #include <cmath>
 

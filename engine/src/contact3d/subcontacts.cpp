@@ -1,12 +1,12 @@
 // Sub-contacts of a 3D contact: the overlap of the two facing faces on the common plane, and
 // the joint law at each of its corners (see contacts3.hpp).
-#include "tessera/subcontacts.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "tessera/common_plane.hpp"
-#include "tessera/contacts.hpp"
+#include "tessera/contact2d/contacts.hpp"
+#include "tessera/contact3d/common_plane.hpp"
 
 namespace tessera {
 

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "core/validation.hpp"
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

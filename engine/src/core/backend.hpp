@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "tessera/damping.hpp"
-#include "tessera/model.hpp"
+#include "tessera/core/damping.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

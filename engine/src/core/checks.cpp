@@ -1,13 +1,13 @@
-#include "tessera/checks.hpp"
+#include "tessera/core/checks.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <numeric>
 
-#include "tessera/detection.hpp"
-#include "tessera/detection3.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/contact3d/detection3.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

@@ -1,9 +1,9 @@
 // Damping of one cycle, the same in 2D and 3D.
-#include "tessera/damping.hpp"
+#include "tessera/core/damping.hpp"
 
 #include <algorithm>
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

@@ -1,4 +1,4 @@
-#include "tessera/geometry.hpp"
+#include "tessera/core/geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
-#include "tessera/history.hpp"
+#include "tessera/core/history.hpp"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <utility>
 
-#include "tessera/model.hpp"
-#include "tessera/step.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

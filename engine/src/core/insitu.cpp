@@ -1,8 +1,8 @@
-#include "tessera/insitu.hpp"
+#include "tessera/core/insitu.hpp"
 
-#include "tessera/detection.hpp"
-#include "tessera/interfaces.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/contact2d/interfaces.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

@@ -1,11 +1,11 @@
-#include "tessera/joint_law.hpp"
+#include "tessera/core/joint_law.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-#include "tessera/contacts.hpp"
+#include "tessera/contact2d/contacts.hpp"
 
 namespace tessera {
 

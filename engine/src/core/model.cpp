@@ -1,4 +1,4 @@
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

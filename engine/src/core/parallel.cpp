@@ -1,4 +1,4 @@
-#include "tessera/parallel.hpp"
+#include "tessera/core/parallel.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>

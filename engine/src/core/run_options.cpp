@@ -1,5 +1,5 @@
 // Stage names and the build's default run options.
-#include "tessera/run_options.hpp"
+#include "tessera/core/run_options.hpp"
 
 namespace tessera {
 

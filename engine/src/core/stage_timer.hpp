@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-#include "tessera/run_options.hpp"
+#include "tessera/core/run_options.hpp"
 
 namespace tessera {
 

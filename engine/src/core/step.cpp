@@ -1,5 +1,5 @@
 // The one cycle of every model, 2D or 3D, top to bottom; run and solve control.
-#include "tessera/step.hpp"
+#include "tessera/core/step.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 
 #include "core/backend.hpp"
 #include "core/stage_timer.hpp"
-#include "tessera/deformable.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/timestep.hpp"
-#include "tessera/zone_stage.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/core/timestep.hpp"
+#include "tessera/zones/deformable.hpp"
+#include "tessera/zones/zone_stage.hpp"
 
 namespace tessera {
 

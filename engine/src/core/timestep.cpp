@@ -1,11 +1,11 @@
 // The time step of every model: fixed, or the safety factor times the smallest stable step.
-#include "tessera/timestep.hpp"
+#include "tessera/core/timestep.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "backend.hpp"
-#include "tessera/deformable.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

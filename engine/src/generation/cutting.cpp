@@ -1,5 +1,5 @@
 // Exact cutting with a CGAL arrangement (the only file of the engine that includes CGAL).
-#include "tessera/cutting.hpp"
+#include "tessera/generation/cutting.hpp"
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>

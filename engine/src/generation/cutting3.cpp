@@ -1,5 +1,5 @@
 // Exact cutting of convex polyhedra by planes (see cutting3.hpp).
-#include "tessera/cutting3.hpp"
+#include "tessera/generation/cutting3.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -8,7 +8,7 @@
 #include <map>
 #include <numbers>
 
-#include "tessera/random.hpp"
+#include "tessera/core/random.hpp"
 
 namespace tessera {
 

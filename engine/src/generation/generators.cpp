@@ -1,6 +1,6 @@
-#include "tessera/generators.hpp"
+#include "tessera/generation/generators.hpp"
 
-#include "tessera/deformable.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 
@@ -31,9 +31,9 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 #include <cmath>
 #include <numbers>
 
-#include "tessera/detection.hpp"
-#include "tessera/random.hpp"
-#include "tessera/step.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/core/random.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera {
 

@@ -1,4 +1,4 @@
-#include "tessera/generators3.hpp"
+#include "tessera/generation/generators3.hpp"
 
 #include <cmath>
 #include <stdexcept>

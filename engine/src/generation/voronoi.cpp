@@ -2,8 +2,8 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "tessera/generators.hpp"
-#include "tessera/random.hpp"
+#include "tessera/core/random.hpp"
+#include "tessera/generation/generators.hpp"
 
 namespace tessera {
 

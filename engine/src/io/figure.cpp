@@ -1,5 +1,5 @@
 // Names of the figure and view options, shared by scripts and the GUI.
-#include "tessera/figure.hpp"
+#include "tessera/io/figure.hpp"
 
 namespace tessera {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "tessera/state_io.hpp"
+#include "tessera/io/state_io.hpp"
 
 namespace tessera {
 

@@ -1,6 +1,6 @@
 // Binary state file: a magic word, a version, then every field of the model in a fixed order.
 // Doubles are written as their bytes, so a restored run continues bit for bit.
-#include "tessera/state_io.hpp"
+#include "tessera/io/state_io.hpp"
 
 #include <cstring>
 #include <filesystem>
@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "tessera/deformable.hpp"
-#include "tessera/detection.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

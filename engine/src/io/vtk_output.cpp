@@ -1,4 +1,4 @@
-#include "tessera/vtk_output.hpp"
+#include "tessera/io/vtk_output.hpp"
 
 #include <cstdio>
 #include <filesystem>

@@ -4,11 +4,11 @@
 #include <sstream>
 #include <tuple>
 
-#include "tessera/deformable.hpp"
-#include "tessera/expr.hpp"
-#include "tessera/generators.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/script.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/generation/generators.hpp"
+#include "tessera/script/expr.hpp"
+#include "tessera/script/script.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

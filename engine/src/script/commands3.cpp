@@ -3,12 +3,12 @@
 #include <cmath>
 #include <tuple>
 
-#include "tessera/common_plane.hpp"
-#include "tessera/expr.hpp"
-#include "tessera/generators.hpp"
-#include "tessera/generators3.hpp"
-#include "tessera/random.hpp"
-#include "tessera/script.hpp"
+#include "tessera/contact3d/common_plane.hpp"
+#include "tessera/core/random.hpp"
+#include "tessera/generation/generators.hpp"
+#include "tessera/generation/generators3.hpp"
+#include "tessera/script/expr.hpp"
+#include "tessera/script/script.hpp"
 
 namespace tessera {
 

@@ -1,5 +1,5 @@
 // Recursive-descent evaluation of script expressions.
-#include "tessera/expr.hpp"
+#include "tessera/script/expr.hpp"
 
 #include <cctype>
 #include <cmath>

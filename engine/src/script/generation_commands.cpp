@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tessera/expr.hpp"
-#include "tessera/generators.hpp"
-#include "tessera/script.hpp"
+#include "tessera/generation/generators.hpp"
+#include "tessera/script/expr.hpp"
+#include "tessera/script/script.hpp"
 
 namespace tessera {
 

@@ -6,11 +6,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "tessera/deformable.hpp"
-#include "tessera/expr.hpp"
-#include "tessera/parallel.hpp"
-#include "tessera/script.hpp"
-#include "tessera/state_io.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/io/state_io.hpp"
+#include "tessera/script/expr.hpp"
+#include "tessera/script/script.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,5 @@
 // Interpreter core: reading lines, splitting words, evaluating numbers, selecting blocks.
-#include "tessera/script.hpp"
+#include "tessera/script/script.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "tessera/expr.hpp"
+#include "tessera/script/expr.hpp"
 
 namespace fs = std::filesystem;
 

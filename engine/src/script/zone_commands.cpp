@@ -2,10 +2,10 @@
 #include <cmath>
 #include <limits>
 
-#include "tessera/deformable.hpp"
-#include "tessera/expr.hpp"
-#include "tessera/insitu.hpp"
-#include "tessera/script.hpp"
+#include "tessera/core/insitu.hpp"
+#include "tessera/script/expr.hpp"
+#include "tessera/script/script.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

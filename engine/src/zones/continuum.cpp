@@ -1,11 +1,11 @@
 // Uniform-strain triangles with nodal mixed discretization, and nodal central differences.
-#include "tessera/continuum.hpp"
+#include "tessera/zones/continuum.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "tessera/blocks.hpp"
+#include "tessera/contact2d/blocks.hpp"
 
 namespace tessera {
 

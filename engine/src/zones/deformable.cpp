@@ -1,5 +1,5 @@
 // Deformable blocks: zoning, outline from nodes, contact forces on nodes, removal.
-#include "tessera/deformable.hpp"
+#include "tessera/zones/deformable.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "tessera/geometry.hpp"
-#include "tessera/timestep.hpp"
+#include "tessera/core/geometry.hpp"
+#include "tessera/core/timestep.hpp"
 
 namespace tessera {
 

@@ -1,5 +1,5 @@
 // The zone constitutive models and their registry.
-#include "tessera/zone_model.hpp"
+#include "tessera/zones/zone_model.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,11 +1,11 @@
 // The zones' stage of the cycle.
-#include "tessera/zone_stage.hpp"
+#include "tessera/zones/zone_stage.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "tessera/deformable.hpp"
-#include "tessera/step.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 

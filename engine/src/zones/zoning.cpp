@@ -1,5 +1,5 @@
 // Constrained Delaunay refinement of a block outline into zones (CGAL's 2D mesher).
-#include "tessera/zoning.hpp"
+#include "tessera/zones/zoning.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>

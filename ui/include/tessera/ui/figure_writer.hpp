@@ -5,7 +5,7 @@
 #include <QRectF>
 #include <string>
 
-#include "tessera/figure.hpp"
+#include "tessera/io/figure.hpp"
 #include "tessera/ui/scene.hpp"
 
 class QPainter;

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "tessera/figure.hpp"
+#include "tessera/io/figure.hpp"
 #include "tessera/ui/draw_tool.hpp"
 #include "tessera/ui/snapshot.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tessera/figure.hpp"
+#include "tessera/io/figure.hpp"
 #include "tessera/ui/colour_map.hpp"
 #include "tessera/ui/snapshot.hpp"
 

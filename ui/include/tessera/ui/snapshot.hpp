@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "tessera/geometry.hpp"
-#include "tessera/polyhedron.hpp"
+#include "tessera/contact3d/polyhedron.hpp"
+#include "tessera/core/geometry.hpp"
 
 namespace tessera {
 struct Model;

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "tessera/polyhedron.hpp"
-#include "tessera/rigid3d.hpp"
+#include "tessera/contact3d/polyhedron.hpp"
+#include "tessera/contact3d/rigid3d.hpp"
 
 namespace tessera {
 

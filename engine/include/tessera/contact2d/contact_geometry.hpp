@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "tessera/blocks.hpp"
+#include "tessera/contact2d/blocks.hpp"
 
 namespace tessera {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

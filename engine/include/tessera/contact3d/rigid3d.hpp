@@ -8,7 +8,7 @@
 
 #include <Eigen/Geometry>
 
-#include "tessera/polyhedron.hpp"
+#include "tessera/contact3d/polyhedron.hpp"
 
 namespace tessera {
 

@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "tessera/checks.hpp"
-#include "tessera/cutting3.hpp"
-#include "tessera/figure.hpp"
-#include "tessera/model.hpp"
-#include "tessera/step.hpp"
-#include "tessera/vtk_output.hpp"
+#include "tessera/core/checks.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/core/step.hpp"
+#include "tessera/generation/cutting3.hpp"
+#include "tessera/io/figure.hpp"
+#include "tessera/io/vtk_output.hpp"
 
 namespace tessera {
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tessera/polyhedron.hpp"
+#include "tessera/contact3d/polyhedron.hpp"
 
 namespace tessera {
 

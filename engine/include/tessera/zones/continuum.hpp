@@ -26,9 +26,9 @@
 #include <span>
 #include <vector>
 
-#include "tessera/geometry.hpp"
-#include "tessera/zone_model.hpp"
-#include "tessera/zoning.hpp"
+#include "tessera/core/geometry.hpp"
+#include "tessera/zones/zone_model.hpp"
+#include "tessera/zones/zoning.hpp"
 
 namespace tessera {
 

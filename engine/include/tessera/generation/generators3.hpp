@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "tessera/cutting3.hpp"
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/generation/cutting3.hpp"
 
 namespace tessera {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "tessera/geometry.hpp"
+#include "tessera/core/geometry.hpp"
 
 namespace tessera {
 

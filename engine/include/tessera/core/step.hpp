@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "tessera/blocks.hpp"
-#include "tessera/blocks3.hpp"
-#include "tessera/contacts.hpp"
-#include "tessera/contacts3.hpp"
-#include "tessera/continuum.hpp"
-#include "tessera/history.hpp"
-#include "tessera/joint_law.hpp"
-#include "tessera/run_options.hpp"
+#include "tessera/contact2d/blocks.hpp"
+#include "tessera/contact2d/contacts.hpp"
+#include "tessera/contact3d/blocks3.hpp"
+#include "tessera/contact3d/contacts3.hpp"
+#include "tessera/core/history.hpp"
+#include "tessera/core/joint_law.hpp"
+#include "tessera/core/run_options.hpp"
+#include "tessera/zones/continuum.hpp"
 
 namespace tessera {
 

@@ -26,8 +26,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "tessera/geometry.hpp"
-#include "tessera/joint_law.hpp"
+#include "tessera/core/geometry.hpp"
+#include "tessera/core/joint_law.hpp"
 
 namespace tessera {
 

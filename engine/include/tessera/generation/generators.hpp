@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "tessera/cutting.hpp"
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/generation/cutting.hpp"
 
 namespace tessera {
 

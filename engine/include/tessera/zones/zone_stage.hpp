@@ -4,7 +4,7 @@
 // out), the interface 3D tetrahedra will plug into.
 #pragma once
 
-#include "tessera/damping.hpp"
+#include "tessera/core/damping.hpp"
 
 namespace tessera {
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

@@ -4,8 +4,8 @@
 
 #include <cstddef>
 
-#include "tessera/model.hpp"
-#include "tessera/zone_model.hpp"
+#include "tessera/core/model.hpp"
+#include "tessera/zones/zone_model.hpp"
 
 namespace tessera {
 

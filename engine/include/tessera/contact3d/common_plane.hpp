@@ -2,7 +2,7 @@
 // from a face of either block or an edge of each, and the gap each gives.
 #pragma once
 
-#include "tessera/blocks3.hpp"
+#include "tessera/contact3d/blocks3.hpp"
 
 namespace tessera {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tessera/geometry.hpp"
+#include "tessera/core/geometry.hpp"
 
 namespace tessera {
 

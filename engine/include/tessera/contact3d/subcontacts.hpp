@@ -2,7 +2,7 @@
 // geometry and force are computed.
 #pragma once
 
-#include "tessera/model.hpp"
+#include "tessera/core/model.hpp"
 
 namespace tessera {
 
