@@ -1,6 +1,6 @@
 // Zone constitutive models (elastic, Mohr-Coulomb, Drucker-Prager, null) and zoning of block
-// outlines: returns land on the yield surface, plastic flow follows the dilation angle, zones
-// tile the block exactly.
+// outlines and polyhedra: returns land on the yield surface, plastic flow follows the dilation
+// angle, triangles and tetrahedra tile the block exactly.
 #include <Eigen/Dense>
 #include <QtTest>
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "tessera/zones/zone_model.hpp"
 #include "tessera/zones/zoning.hpp"
+#include "tessera/zones/zoning3.hpp"
 
 using namespace tessera;
 
@@ -188,6 +189,73 @@ class TestZones : public QObject {
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polygon(l_shape, 1e-5, 100000));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              zone_polygon({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 0.1));  // clockwise
+  }
+
+  // Tetrahedra tile a concave block (an L prism): volumes positive and adding up, none in the
+  // notch, corners kept, surface nodes on the faces and no others there, quality and size as
+  // asked, the same mesh every time; graded zones finer near the centre; bad blocks refused.
+  void tetrahedraTileTheBlock() {
+    const std::vector<Eigen::Vector2d> l_shape{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}};
+    const Polyhedron block = prism(l_shape, 0, 1);
+    const double h = 0.25;
+    const ZoneMesh3 m = zone_polyhedron(block, h);
+    double volume = 0;
+    for (const auto& t : m.tets) {
+      const std::array<Vec3, 4> p{m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]};
+      const double v = (p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) / 6.0;
+      QVERIFY(v > 0);
+      volume += v;
+      const Vec3 c = (p[0] + p[1] + p[2] + p[3]) / 4.0;
+      QVERIFY(!(c.x() > 1 && c.y() > 1));
+    }
+    qInfo("%zu tetrahedra, %zu nodes, smallest dihedral %.1f degrees, longest edge %.3f",
+          m.tets.size(), m.nodes.size(), m.min_dihedral, m.max_edge);
+    QVERIFY(std::abs(volume - 4.0) < 1e-9);
+    QVERIFY(m.max_edge <= 2 * h);  // circumradius at most h
+    QVERIFY(static_cast<double>(m.tets.size()) > 4.0 / (h * h * h / (6 * std::numbers::sqrt2)) / 2);
+    QVERIFY2(m.min_dihedral >= 10.0, qPrintable(QString::number(m.min_dihedral)));
+    for (const Vec3& corner : block.vertices) {
+      const auto it = std::find_if(m.nodes.begin(), m.nodes.end(),
+                                   [&](const Vec3& n) { return (n - corner).norm() < 1e-12; });
+      QVERIFY(it != m.nodes.end() && m.on_boundary[size_t(it - m.nodes.begin())]);
+    }
+    size_t boundary = 0;
+    for (size_t i = 0; i < m.nodes.size(); ++i) {
+      const Vec3& n = m.nodes[i];
+      auto at = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+      const bool on = at(n.x(), 0) || at(n.y(), 0) || at(n.x(), 3) || at(n.y(), 2) ||
+                      at(n.z(), 0) || at(n.z(), 1) || (at(n.x(), 1) && n.y() >= 1) ||
+                      (at(n.y(), 1) && n.x() >= 1);
+      QCOMPARE(bool(m.on_boundary[i]), on);
+      boundary += on;
+    }
+    QVERIFY(boundary >= 200);  // surface 18 in triangles of edges at most 2h
+    QCOMPARE(min_dihedral_angle({Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)}),
+             std::acos(1.0 / 3.0) * 180 / std::numbers::pi);  // the regular tetrahedron's
+    const ZoneMesh3 again = zone_polyhedron(block, h);
+    QVERIFY(again.nodes == m.nodes && again.tets == m.tets);
+    // Graded: edges of 0.2 within 0.5 of a corner of a 4 m cube, growing by 0.5 per metre to 1.
+    const ZoneGrading3 grade{Vec3::Zero(), 0.5, 0.2, 0.5};
+    const ZoneMesh3 g = zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 4)), 1.0, 2000000, &grade);
+    double near = 0, far = 0;
+    int n_near = 0, n_far = 0;
+    for (const auto& t : g.tets) {
+      const Vec3 c = (g.nodes[t[0]] + g.nodes[t[1]] + g.nodes[t[2]] + g.nodes[t[3]]) / 4.0;
+      const double edge = (g.nodes[t[0]] - g.nodes[t[1]]).norm();
+      if (c.norm() < 0.7) near += edge, ++n_near;
+      if (c.norm() > 3.5) far += edge, ++n_far;
+    }
+    qInfo("graded: %zu tetrahedra, mean edge %.2f near the corner, %.2f far from it", g.tets.size(),
+          near / n_near, far / n_far);
+    QVERIFY(n_near > 10 && n_far > 10 && near / n_near < 0.4 && far / n_far > 0.6);
+    // Refused: too many zones, faces turned inside out, a surface with a hole.
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(block, 1e-3, 100000));
+    Polyhedron inverted = block, open = block;
+    for (auto& f : inverted.faces) std::reverse(f.begin(), f.end());
+    open.faces.pop_back();
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(inverted, h));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(open, h));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(block, 0.0));
   }
 };
 

@@ -74,11 +74,6 @@ double angle_at(const Vec2& a, const Vec2& b, const Vec2& c) {
 }
 }  // namespace
 
-double ZoneGrading::size_at(const Vec2& p, double max_edge) const {
-  const double d = std::max(0.0, (p - centre).norm() - radius);
-  return std::min(max_edge, fine_edge + growth * d);
-}
-
 ZoneMesh zone_polygon(const std::vector<Vec2>& polygon, double max_edge, size_t max_zones,
                       const ZoneGrading* grading) {
   if (polygon.size() < 3) throw std::invalid_argument("a block outline needs three corners");

@@ -1,6 +1,7 @@
 // Zoning: a block cut into the uniform-strain triangles of a deformable block (§5.2.1).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -18,12 +19,17 @@ struct ZoneMesh {
 };
 
 // Finer zones near a point: edge `fine_edge` within `radius` of `centre`, growing by `growth`
-// per metre beyond it, up to the mesh's largest size.
-struct ZoneGrading {
-  Vec2 centre = Vec2::Zero();
+// per metre beyond it, up to the mesh's largest size (one rule for triangles and tetrahedra).
+template <class Point>
+struct Grading {
+  Point centre = Point::Zero();
   double radius = 0.0, fine_edge = 0.0, growth = 0.25;
-  double size_at(const Vec2& p, double max_edge) const;
+  double size_at(const Point& p, double max_edge) const {
+    const double d = std::max(0.0, (p - centre).norm() - radius);
+    return std::min(max_edge, fine_edge + growth * d);
+  }
 };
+using ZoneGrading = Grading<Vec2>;
 
 // Triangulates a simple polygon (counter-clockwise, convex or not) with CGAL's constrained
 // Delaunay refinement: zone edges no longer than `max_edge`, angles of about 20 degrees or more
