@@ -116,10 +116,13 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
                           params::facet_size = facet, params::facet_distance = 0.1 * max_edge,
                           params::cell_radius_edge_ratio = 2.0, params::cell_size = cell);
   // The perturber draws from CGAL's default generator: seeded here, the same block gives the
-  // same mesh whatever ran before on this thread.
+  // same mesh whatever ran before on this thread. It runs while its steps succeed: CGAL's
+  // default stops it after as much CPU time as the refinement took, so a busy machine meshed
+  // the same block differently (1659 zones against 1656).
   CGAL::get_default_random() = CGAL::Random(0);
-  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
-                                            params::perturb(), params::no_exude());
+  const C3t3 c3t3 =
+      CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
+                              params::perturb(params::time_limit = 0), params::no_exude());
   // The mesher's cells come in an order that depends on memory addresses, its vertices not:
   // nodes are numbered in coordinate order and zones sorted, so the numbering is the same on
   // every run. Each zone lists its nodes ascending, the last two swapped for positive volume.
