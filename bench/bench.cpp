@@ -11,6 +11,9 @@
 #include "tessera/core/step.hpp"
 #include "tessera/generation/generators.hpp"
 #include "tessera/generation/generators3.hpp"
+#include "tessera/zones/continuum.hpp"
+#include "tessera/zones/zoning.hpp"
+#include "tessera/zones/zoning3.hpp"
 
 using namespace tessera;
 
@@ -59,6 +62,61 @@ Model wall3d_scene(int cols, int rows) {
   return m;
 }
 
+// Elastic rock (density 2500, E 10 GPa, nu 0.25) settling under gravity on rollers: the zone
+// kernel alone (no contacts). zones2d: a 20 x 40 m plane-strain panel of triangles; column3d:
+// a 4 x 4 x 16 m column of tetrahedra. `edge` is the zone size.
+template <int D>
+void rollers_and_rock(ContinuumT<D>& c) {
+  ZoneProperties p;
+  p.name = "rock", p.density = 2500;
+  elastic_from_young(10e9, 0.25, p.bulk, p.shear);
+  p.finalize();
+  c.materials.push_back(p);
+  for (auto& z : c.material) z = 0;
+  lump_masses(c);
+  for (size_t n = 0; n < c.node_count(); ++n)
+    for (int k = 0; k < D; ++k)
+      if (c.pos0[n][k] < 1e-9) c.fixity[n] |= node_fix_bit(k);
+  c.gravity[D - 1] = -9.81;
+  c.dt = critical_timestep(c);
+}
+
+template <int D>
+int run_zones(ContinuumT<D>& c, const std::string& scene, double edge, uint64_t cycles,
+              double mesh_seconds) {
+  rollers_and_rock(c);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (uint64_t i = 0; i < cycles; ++i) continuum_cycle(c);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double per_cycle = seconds / static_cast<double>(std::max<uint64_t>(cycles, 1));
+  std::cout << fmt::format(
+                   "{{\"scene\": \"{}\", \"edge\": {}, \"zones\": {}, \"nodes\": {}, "
+                   "\"mesh_seconds\": {:.3f}, \"cycles\": {}, \"seconds\": {:.4f}, "
+                   "\"ms_per_cycle\": {:.4f}, \"zone_updates_per_s\": {:.4g}, \"ratio\": {:.3e}}}",
+                   scene, edge, c.zone_count(), c.node_count(), mesh_seconds, cycles, seconds,
+                   1e3 * per_cycle, static_cast<double>(c.zone_count()) / per_cycle, c.ratio)
+            << std::endl;
+  return 0;
+}
+
+int zone_scene(const std::string& scene, double edge, uint64_t cycles) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto since = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  if (scene == "zones2d") {
+    if (edge <= 0) edge = 0.2;
+    Continuum c;
+    add_mesh(c, zone_polygon({{0, 0}, {20, 0}, {20, 40}, {0, 40}}, edge), 0);
+    return run_zones(c, scene, edge, cycles, since());
+  }
+  if (edge <= 0) edge = 0.36;
+  Continuum3 c;
+  add_mesh(c, zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 16)), edge), 0);
+  return run_zones(c, scene, edge, cycles, since());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,7 +125,10 @@ int main(int argc, char** argv) {
   int cols = 100, rows = 50, threads = 1;
   uint64_t cycles = 1000;
   double ratio = 0.0;
-  app.add_option("--scene", scene, "Scene to run")->check(CLI::IsMember({"wall", "wall3d"}));
+  double edge = 0.0;
+  app.add_option("--scene", scene, "Scene to run")
+      ->check(CLI::IsMember({"wall", "wall3d", "zones2d", "column3d"}));
+  app.add_option("--edge", edge, "Zone size of zones2d and column3d (default 0.2 and 0.36 m)");
   app.add_option("--cols", cols, "Bricks per course")->check(CLI::PositiveNumber);
   app.add_option("--rows", rows, "Courses")->check(CLI::PositiveNumber);
   app.add_option("--cycles", cycles, "Cycles to run");
@@ -76,6 +137,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   set_thread_count(threads);
+  if (scene == "zones2d" || scene == "column3d") return zone_scene(scene, edge, cycles);
   Model m = scene == "wall3d" ? wall3d_scene(cols, rows) : wall_scene(cols, rows);
   Profile profile;
   m.options.profile = &profile;

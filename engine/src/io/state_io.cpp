@@ -16,7 +16,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 7;
+constexpr uint32_t kVersion = 8;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding

@@ -1,13 +1,88 @@
-// Uniform-strain triangles with nodal mixed discretization, and nodal central differences.
+// Uniform-strain triangles and tetrahedra with nodal mixed discretization, and nodal central
+// differences: one kernel, templated on the dimension.
 #include "tessera/zones/continuum.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "tessera/contact2d/blocks.hpp"
-
 namespace tessera {
+
+namespace {
+// D! : the measure of a simplex is |det| / D!.
+template <int D>
+constexpr double kFactorial = D == 2 ? 2.0 : 6.0;
+
+template <int D>
+using VecD = typename ContinuumT<D>::Vec;
+
+// A zone's shape-function gradients on `pos`, each times D! times its measure: in 2D the edge
+// opposite each node turned outward, in 3D the rows of the Jacobian's adjugate.
+template <int D>
+std::array<VecD<D>, D + 1> gradients(const std::vector<VecD<D>>& pos,
+                                     const typename ContinuumT<D>::Zone& t) {
+  std::array<VecD<D>, D + 1> g;
+  if constexpr (D == 2) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec2& pj = pos[t[(k + 1) % 3]];
+      const Vec2& pk = pos[t[(k + 2) % 3]];
+      g[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
+    }
+  } else {
+    const Vec3 e1 = pos[t[1]] - pos[t[0]], e2 = pos[t[2]] - pos[t[0]], e3 = pos[t[3]] - pos[t[0]];
+    g[1] = e2.cross(e3), g[2] = e3.cross(e1), g[3] = e1.cross(e2);
+    g[0] = -(g[1] + g[2] + g[3]);
+  }
+  return g;
+}
+
+// The measure (area, volume) of a zone with corners in `pos`.
+template <int D>
+double measure(const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zone& t) {
+  if constexpr (D == 2)
+    return 0.5 * cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]);
+  else
+    return (pos[t[1]] - pos[t[0]]).cross(pos[t[2]] - pos[t[0]]).dot(pos[t[3]] - pos[t[0]]) / 6.0;
+}
+
+// The symmetric part of sum_k u_k g_k^T times `f`, as a strain (tensor shears).
+template <int D>
+StrainIncrement symmetric_gradient(const std::array<VecD<D>, D + 1>& u,
+                                   const std::array<VecD<D>, D + 1>& g, double f) {
+  Eigen::Matrix<double, D, D> l = Eigen::Matrix<double, D, D>::Zero();
+  for (int k = 0; k <= D; ++k)
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) l(i, j) += u[k][i] * g[k][j];
+  StrainIncrement e{l(0, 0) * f, l(1, 1) * f, 0.5 * (l(0, 1) + l(1, 0)) * f};
+  if constexpr (D == 3) {
+    e.zz = l(2, 2) * f, e.yz = 0.5 * (l(1, 2) + l(2, 1)) * f;
+    e.xz = 0.5 * (l(0, 2) + l(2, 0)) * f;
+  }
+  return e;
+}
+
+template <int D>
+double trace(const StrainIncrement& e) {
+  return D == 2 ? e.xx + e.yy : e.xx + e.yy + e.zz;
+}
+template <int D>
+double trace(const ZoneStress& s) {
+  return D == 2 ? s.xx + s.yy : s.xx + s.yy + s.zz;
+}
+
+// The zone's own values of `v` (node velocities or displacements) gathered in zone order.
+template <int D>
+std::array<VecD<D>, D + 1> gather(const std::vector<VecD<D>>& v,
+                                  const typename ContinuumT<D>::Zone& t,
+                                  const std::vector<VecD<D>>* minus = nullptr) {
+  std::array<VecD<D>, D + 1> out;
+  for (int k = 0; k <= D; ++k) {
+    out[k] = v[t[k]];
+    if (minus) out[k] -= (*minus)[t[k]];
+  }
+  return out;
+}
+}  // namespace
 
 uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
   const auto first = static_cast<uint32_t>(c.pos.size());
@@ -24,65 +99,98 @@ uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
   return first;
 }
 
-void zone_strain(const Continuum& c, size_t z, double& exx, double& eyy, double& exy) {
-  const auto& t = c.zones[z];
-  const double a2 = cross(c.pos0[t[1]] - c.pos0[t[0]], c.pos0[t[2]] - c.pos0[t[0]]);
-  double ux_x = 0, ux_y = 0, uy_x = 0, uy_y = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2& pj = c.pos0[t[(k + 1) % 3]];
-    const Vec2& pk = c.pos0[t[(k + 2) % 3]];
-    const Vec2 u = c.pos[t[k]] - c.pos0[t[k]];
-    const double bx = pj.y() - pk.y(), by = pk.x() - pj.x();
-    ux_x += u.x() * bx, ux_y += u.x() * by, uy_x += u.y() * bx, uy_y += u.y() * by;
+uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material) {
+  const auto first = static_cast<uint32_t>(c.pos.size());
+  for (const Vec3& p : mesh.nodes) {
+    c.pos.push_back(p), c.pos0.push_back(p);
+    c.vel.push_back(Vec3::Zero()), c.force.push_back(Vec3::Zero());
+    c.applied.push_back(Vec3::Zero()), c.fixed_vel.push_back(Vec3::Zero());
+    c.mass.push_back(0), c.inertia.push_back(0), c.fixity.push_back(0);
   }
-  exx = ux_x / a2, eyy = uy_y / a2, exy = 0.5 * (ux_y + uy_x) / a2;
+  for (const auto& t : mesh.tets) {
+    c.zones.push_back({first + t[0], first + t[1], first + t[2], first + t[3]});
+    c.stress.emplace_back(), c.state.push_back(0), c.material.push_back(material);
+  }
+  return first;
+}
+
+template <int D>
+StrainIncrement total_strain(const ContinuumT<D>& c, size_t z) {
+  const auto& t = c.zones[z];
+  const double scaled = kFactorial<D> * measure<D>(c.pos0, t);
+  StrainIncrement e =
+      symmetric_gradient<D>(gather<D>(c.pos, t, &c.pos0), gradients<D>(c.pos0, t), 1.0);
+  e.xx /= scaled, e.yy /= scaled, e.xy /= scaled, e.zz /= scaled, e.yz /= scaled, e.xz /= scaled;
+  return e;
 }
 
 void principal_stresses(const ZoneStress& s, double& s1, double& s3) {
+  if (s.yz != 0 || s.xz != 0) {
+    const Principal p = principal_3d(s);
+    s1 = p.s[0], s3 = p.s[2];
+    return;
+  }
   double a = 0, b = 0, angle = 0;
   principal_2d(s, a, b, angle);
   s1 = std::min(a, s.zz), s3 = std::max(b, s.zz);
 }
 
-double zone_area(const Continuum& c, size_t z) {
-  const auto& t = c.zones[z];
-  return 0.5 * cross(c.pos[t[1]] - c.pos[t[0]], c.pos[t[2]] - c.pos[t[0]]);
+template <int D>
+double zone_volume(const ContinuumT<D>& c, size_t z) {
+  return measure<D>(c.pos, c.zones[z]);
 }
 
-void lump_masses(Continuum& c) {
+template <int D>
+void lump_masses(ContinuumT<D>& c) {
   std::fill(c.mass.begin(), c.mass.end(), 0.0);
   for (size_t z = 0; z < c.zones.size(); ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
     if (!p.impl->solid()) continue;
-    const double m = p.density * zone_area(c, z) / 3.0;
+    const double m = p.density * zone_volume(c, z) / (D + 1.0);
     for (uint32_t n : c.zones[z]) c.mass[n] += m;
   }
   c.inertia = c.mass;
 }
 
-double zone_timestep(const Continuum& c, size_t z) {
+template <int D>
+double zone_timestep(const ContinuumT<D>& c, size_t z) {
   const ZoneProperties& p = c.materials[c.material[z]];
   if (!p.impl->solid()) return 1e300;
   const auto& t = c.zones[z];
-  double longest = 0;
-  for (int k = 0; k < 3; ++k)
-    longest = std::max(longest, (c.pos[t[(k + 1) % 3]] - c.pos[t[k]]).norm());
-  const double height = 2.0 * zone_area(c, z) / longest;
+  // The smallest height: D times the measure over the largest facet (edge, face).
+  double largest = 0;
+  if constexpr (D == 2) {
+    for (int k = 0; k < 3; ++k)
+      largest = std::max(largest, (c.pos[t[(k + 1) % 3]] - c.pos[t[k]]).norm());
+  } else {
+    for (int k = 0; k < 4; ++k) {
+      const Vec3& a = c.pos[t[(k + 1) % 4]];
+      const Vec3& b = c.pos[t[(k + 2) % 4]];
+      const Vec3& d = c.pos[t[(k + 3) % 4]];
+      largest = std::max(largest, 0.5 * (b - a).cross(d - a).norm());
+    }
+  }
+  const double height = D * zone_volume(c, z) / largest;
   return height / std::sqrt((p.bulk + 4.0 * p.shear / 3.0) / p.density);
 }
 
-double critical_timestep(const Continuum& c, double safety) {
+template <int D>
+double critical_timestep(const ContinuumT<D>& c, double safety) {
   double dt = 1e300;
   for (size_t z = 0; z < c.zones.size(); ++z) dt = std::min(dt, zone_timestep(c, z));
   return safety * dt;
 }
 
-void initialize_stress(Continuum& c, const ZoneStress& s0, const ZoneStress& g, double y0) {
+template <int D>
+void initialize_stress(ContinuumT<D>& c, const ZoneStress& s0, const ZoneStress& g, double v0) {
   for (size_t z = 0; z < c.zones.size(); ++z) {
     if (!c.materials[c.material[z]].impl->solid()) continue;
     const auto& t = c.zones[z];
-    const double dy = (c.pos[t[0]].y() + c.pos[t[1]].y() + c.pos[t[2]].y()) / 3.0 - y0;
-    c.stress[z] = {s0.xx + g.xx * dy, s0.yy + g.yy * dy, s0.xy + g.xy * dy, s0.zz + g.zz * dy};
+    double h = 0;
+    for (uint32_t n : t) h += c.pos[n][D - 1];
+    const double dv = h / (D + 1.0) - v0;
+    c.stress[z] = {s0.xx + g.xx * dv, s0.yy + g.yy * dv, s0.xy + g.xy * dv,
+                   s0.zz + g.zz * dv, s0.yz + g.yz * dv, s0.xz + g.xz * dv};
   }
 }
 
@@ -103,118 +211,124 @@ std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh) {
   return out;
 }
 
-namespace {
-// The size of the forces meeting at each node, for the unbalanced-force ratio.
-thread_local std::vector<double> scale;
-// Scratch of the nodal mixed discretization, per zone: strain increment, area, in-plane
-// volumetric increment, isotropic part of the plastic correction, and their nodal averages;
-// per node: weighted sums and weights.
-thread_local std::vector<StrainIncrement> zone_de;
-thread_local std::vector<double> zone_area_now, zone_ev, zone_ev_mixed, zone_dp, zone_dp_mixed;
-thread_local std::vector<double> node_sum, node_weight;
-
-// A zone's shape-function gradients on the current shape, each times twice the area.
-std::array<Vec2, 3> zone_gradients(const Continuum& c, const std::array<uint32_t, 3>& t) {
-  std::array<Vec2, 3> grad;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2& pj = c.pos[t[(k + 1) % 3]];
-    const Vec2& pk = c.pos[t[(k + 2) % 3]];
-    grad[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
-  }
-  return grad;
+std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh) {
+  // A face used by one tetrahedron only is on the surface. The face opposite corner k of a
+  // positive tetrahedron, taken in these orders, is counter-clockwise seen from outside.
+  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  auto key = [](std::array<uint32_t, 3> f) {
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  std::map<std::array<uint32_t, 3>, int> count;
+  for (const auto& t : mesh.tets)
+    for (const auto& f : kFace) ++count[key({t[f[0]], t[f[1]], t[f[2]]})];
+  std::vector<std::array<uint32_t, 3>> out;
+  for (const auto& t : mesh.tets)
+    for (const auto& f : kFace) {
+      const std::array<uint32_t, 3> face{t[f[0]], t[f[1]], t[f[2]]};
+      if (count[key(face)] == 1) out.push_back(face);
+    }
+  return out;
 }
-}  // namespace
 
-void continuum_cycle(Continuum& c) {
+template <int D>
+void continuum_cycle(ContinuumT<D>& c) {
   zone_forces(c);
   move_nodes(c);
 }
 
-void zone_forces(Continuum& c) {
+template <int D>
+void zone_forces(ContinuumT<D>& c) {
   const size_t nn = c.pos.size(), nz = c.zones.size();
-  scale.assign(nn, 0.0);
+  ZoneScratch& w = c.scratch;
+  w.scale.assign(nn, 0.0);
   for (size_t n = 0; n < nn; ++n) {
     c.force[n] = c.applied[n] + c.mass[n] * c.gravity;
-    scale[n] = c.applied[n].norm() + c.mass[n] * c.gravity.norm();
+    w.scale[n] = c.applied[n].norm() + c.mass[n] * c.gravity.norm();
   }
-  zone_de.resize(nz), zone_area_now.resize(nz), zone_ev.resize(nz), zone_ev_mixed.resize(nz);
-  zone_dp.resize(nz), zone_dp_mixed.resize(nz), node_sum.resize(nn), node_weight.resize(nn);
+  w.de.resize(nz), w.volume.resize(nz), w.ev.resize(nz), w.ev_mixed.resize(nz);
+  w.dp.resize(nz), w.dp_mixed.resize(nz), w.node_sum.resize(nn), w.node_weight.resize(nn);
   // Zones: strain increment from the nodal velocities (uniform gradient of the linear field).
   for (size_t z = 0; z < nz; ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
     if (!p.impl->solid()) {
-      zone_area_now[z] = 0, zone_ev[z] = 0;
+      w.volume[z] = 0, w.ev[z] = 0;
       continue;
     }
     const auto& t = c.zones[z];
-    const double a2 = 2.0 * zone_area(c, z);
-    const std::array<Vec2, 3> grad = zone_gradients(c, t);
-    double dvx_dx = 0, dvx_dy = 0, dvy_dx = 0, dvy_dy = 0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec2& v = c.vel[t[k]];
-      dvx_dx += v.x() * grad[k].x(), dvx_dy += v.x() * grad[k].y();
-      dvy_dx += v.y() * grad[k].x(), dvy_dy += v.y() * grad[k].y();
-    }
-    const double f = c.dt / a2;
-    zone_de[z] = {dvx_dx * f, dvy_dy * f, 0.5 * (dvx_dy + dvy_dx) * f};
-    zone_area_now[z] = 0.5 * a2, zone_ev[z] = zone_de[z].xx + zone_de[z].yy;
+    const double scaled = kFactorial<D> * zone_volume(c, z);
+    w.de[z] = symmetric_gradient<D>(gather<D>(c.vel, t), gradients<D>(c.pos, t), c.dt / scaled);
+    w.volume[z] = scaled / kFactorial<D>, w.ev[z] = trace<D>(w.de[z]);
   }
   // Nodal mixed discretization of the strain: volumetric increments averaged at the nodes.
   const bool mixed = c.nodal_mixed;
   if (mixed)
-    nodal_average<3>(c.zones, zone_area_now, zone_ev, nn, node_sum, node_weight, zone_ev_mixed);
+    nodal_average<D + 1>(c.zones, w.volume, w.ev, nn, w.node_sum, w.node_weight, w.ev_mixed);
   // Zones: the constitutive update on the zone's own deviatoric and the mixed volumetric
-  // increment (in the plane: plane strain keeps dezz = 0); a yielding zone's plastic correction
-  // of the in-plane isotropic stress is what it changed beyond the elastic (K + G/3) de_vol
-  // (for tetrahedra: the mean stress beyond K de_vol).
+  // increment (2D: plane strain keeps dezz = 0); a yielding zone's plastic correction of the
+  // isotropic stress (of the plane in 2D) is what it changed beyond the elastic part of the
+  // volumetric increment: (K + G/3) de_vol for a triangle's in-plane mean, K de_vol in 3D.
   bool plastic = false;
   for (size_t z = 0; z < nz; ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
-    zone_dp[z] = 0;
+    w.dp[z] = 0;
     if (!p.impl->solid()) continue;
-    StrainIncrement de = zone_de[z];
+    StrainIncrement de = w.de[z];
     if (mixed) {
-      const double d = 0.5 * (zone_ev_mixed[z] - zone_ev[z]);
+      const double d = (w.ev_mixed[z] - w.ev[z]) / D;
       de.xx += d, de.yy += d;
+      if constexpr (D == 3) de.zz += d;
     }
     ZoneStress& s = c.stress[z];
-    const double before = s.xx + s.yy;
+    const double before = trace<D>(s);
     p.impl->update(p, de, s, c.state[z]);
     if (mixed && (c.state[z] & (kShearNow | kTensionNow))) {
-      zone_dp[z] = 0.5 * (s.xx + s.yy - before) - (p.bulk + p.shear / 3.0) * (de.xx + de.yy);
+      const double k_iso = D == 2 ? p.bulk + p.shear / 3.0 : p.bulk;
+      w.dp[z] = (trace<D>(s) - before) / D - k_iso * trace<D>(de);
       plastic = true;
     }
   }
   // Nodal mixed discretization of the stress: the plastic isotropic corrections averaged the
   // same way, so that dilatant flow leaves no zone-by-zone pressure for the mixed strain to miss.
   if (plastic)
-    nodal_average<3>(c.zones, zone_area_now, zone_dp, nn, node_sum, node_weight, zone_dp_mixed);
-  // Zones: the stress as nodal forces f_i = -A sigma grad N_i.
+    nodal_average<D + 1>(c.zones, w.volume, w.dp, nn, w.node_sum, w.node_weight, w.dp_mixed);
+  // Zones: the stress as nodal forces f_i = -V sigma grad N_i.
   for (size_t z = 0; z < nz; ++z) {
     if (!c.materials[c.material[z]].impl->solid()) continue;
     const auto& t = c.zones[z];
     ZoneStress& s = c.stress[z];
     if (plastic) {
-      const double d = zone_dp_mixed[z] - zone_dp[z];
+      const double d = w.dp_mixed[z] - w.dp[z];
       s.xx += d, s.yy += d;
+      if constexpr (D == 3) s.zz += d;
     }
-    const std::array<Vec2, 3> grad = zone_gradients(c, t);
-    for (int k = 0; k < 3; ++k) {
-      const Vec2& g = grad[k];
-      const Vec2 fz = 0.5 * Vec2(s.xx * g.x() + s.xy * g.y(), s.xy * g.x() + s.yy * g.y());
+    const std::array<VecD<D>, D + 1> grad = gradients<D>(c.pos, t);
+    for (int k = 0; k <= D; ++k) {
+      const VecD<D>& g = grad[k];
+      VecD<D> fz;
+      if constexpr (D == 2)
+        fz = 0.5 * Vec2(s.xx * g.x() + s.xy * g.y(), s.xy * g.x() + s.yy * g.y());
+      else
+        fz = Vec3(s.xx * g.x() + s.xy * g.y() + s.xz * g.z(),
+                  s.xy * g.x() + s.yy * g.y() + s.yz * g.z(),
+                  s.xz * g.x() + s.yz * g.y() + s.zz * g.z()) /
+             6.0;
       c.force[t[k]] -= fz;
-      scale[t[k]] += fz.norm();
+      w.scale[t[k]] += fz.norm();
     }
   }
 }
 
-void add_node_force(Continuum& c, size_t n, const Vec2& f) {
+template <int D>
+void add_node_force(ContinuumT<D>& c, size_t n, const typename ContinuumT<D>::Vec& f) {
   c.force[n] += f;
-  scale[n] += f.norm();
+  c.scratch.scale[n] += f.norm();
 }
 
-double move_nodes(Continuum& c) {
+template <int D>
+double move_nodes(ContinuumT<D>& c) {
   const size_t nn = c.pos.size();
+  std::vector<double>& scale = c.scratch.scale;
   if (scale.size() != nn) scale.assign(nn, 0.0);
   // Motion: local damping against the unbalanced force, fixed components held.
   double max_move = 0;
@@ -222,10 +336,9 @@ double move_nodes(Continuum& c) {
   size_t free_nodes = 0;
   for (size_t n = 0; n < nn; ++n) {
     if (c.mass[n] <= 0) continue;
-    Vec2 f = c.force[n];
-    for (int k = 0; k < 2; ++k) {
-      const uint8_t bit = k == 0 ? kFixX : kFixY;
-      if (c.fixity[n] & bit) {
+    VecD<D> f = c.force[n];
+    for (int k = 0; k < D; ++k) {
+      if (c.fixity[n] & node_fix_bit(k)) {
         c.vel[n][k] = c.fixed_vel[n][k];
         continue;
       }
@@ -246,5 +359,21 @@ double move_nodes(Continuum& c) {
   ++c.cycle;
   return max_move;
 }
+
+// The kernel in both dimensions.
+#define TESSERA_CONTINUUM(D)                                                                     \
+  template StrainIncrement total_strain(const ContinuumT<D>&, size_t);                           \
+  template double zone_volume(const ContinuumT<D>&, size_t);                                     \
+  template void lump_masses(ContinuumT<D>&);                                                     \
+  template double zone_timestep(const ContinuumT<D>&, size_t);                                   \
+  template double critical_timestep(const ContinuumT<D>&, double);                               \
+  template void initialize_stress(ContinuumT<D>&, const ZoneStress&, const ZoneStress&, double); \
+  template void continuum_cycle(ContinuumT<D>&);                                                 \
+  template void zone_forces(ContinuumT<D>&);                                                     \
+  template void add_node_force(ContinuumT<D>&, size_t, const ContinuumT<D>::Vec&);               \
+  template double move_nodes(ContinuumT<D>&);
+TESSERA_CONTINUUM(2)
+TESSERA_CONTINUUM(3)
+#undef TESSERA_CONTINUUM
 
 }  // namespace tessera

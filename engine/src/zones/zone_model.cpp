@@ -1,6 +1,7 @@
 // The zone constitutive models and their registry.
 #include "tessera/zones/zone_model.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,14 +13,51 @@ namespace tessera {
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Elastic trial stress: ds = 2G de + (K - 2G/3) tr(de) I, with dezz = 0 in plane strain.
+// Elastic trial stress: ds = 2G de + (K - 2G/3) tr(de) I (in plane strain dezz = 0).
 void elastic_step(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s) {
   const double lambda = p.bulk - 2.0 * p.shear / 3.0;
-  const double vol = de.xx + de.yy;
+  const double vol = de.xx + de.yy + de.zz;
   s.xx += 2.0 * p.shear * de.xx + lambda * vol;
   s.yy += 2.0 * p.shear * de.yy + lambda * vol;
-  s.zz += lambda * vol;
+  s.zz += 2.0 * p.shear * de.zz + lambda * vol;
   s.xy += 2.0 * p.shear * de.xy;
+  s.yz += 2.0 * p.shear * de.yz;
+  s.xz += 2.0 * p.shear * de.xz;
+}
+
+// Mohr-Coulomb's correction of principal stresses s1 <= s2 <= s3 back onto the yield surface
+// (FLAC's formulation): shear yield fs = s1 - s3 Nphi + 2c sqrt(Nphi), tension ft = sigma_t -
+// s3, the corrections by the non-associated flow rule with Npsi. Returns false if elastic.
+bool mohr_coulomb_return(const ZoneProperties& p, double& s1, double& s2, double& s3,
+                         uint8_t& state) {
+  const double sphi = std::sin(p.friction * kDeg), spsi = std::sin(p.dilation * kDeg);
+  const double nphi = (1 + sphi) / (1 - sphi), npsi = (1 + spsi) / (1 - spsi);
+  const double rn = std::sqrt(nphi);
+  // The tensile strength cannot exceed the apex of the shear cone.
+  double st = p.tension;
+  if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
+  const double a1 = p.bulk + 4.0 * p.shear / 3.0, a2 = p.bulk - 2.0 * p.shear / 3.0;
+  const double fs = s1 - s3 * nphi + 2.0 * p.cohesion * rn;
+  const double ft = st - s3;
+  if (fs >= 0 && ft >= 0) return false;
+  // Which failure: the line h = 0 bisects shear and tension regions near the corner.
+  const double alpha_p = std::sqrt(1 + nphi * nphi) + nphi;
+  const double sigma_p = st * nphi - 2.0 * p.cohesion * rn;
+  const double h = s3 - st + alpha_p * (s1 - sigma_p);
+  if (fs < 0 && h <= 0) {
+    const double ls = fs / ((a1 - a2 * npsi) - (a2 - a1 * npsi) * nphi);
+    s1 -= ls * (a1 - a2 * npsi);
+    s2 -= ls * a2 * (1 - npsi);
+    s3 -= ls * (a2 - a1 * npsi);
+    state |= kShearNow | kShearPast;
+  } else {
+    const double lt = ft / a1;
+    s1 += lt * a2;
+    s2 += lt * a2;
+    s3 += lt * a1;
+    state |= kTensionNow | kTensionPast;
+  }
+  return true;
 }
 
 class NullModel final : public ZoneModel {
@@ -43,9 +81,9 @@ class ElasticModel final : public ZoneModel {
   }
 };
 
-// Mohr-Coulomb with tension cut-off (FLAC's formulation): principal stresses s1 <= s2 <= s3
-// (s1 the most compressive); shear yield fs = s1 - s3 Nphi + 2c sqrt(Nphi), tension ft =
-// sigma_t - s3; the corrections follow the non-associated flow rule with Npsi.
+// Mohr-Coulomb with tension cut-off. When z is a principal direction (every 2D zone, in plane
+// strain) the principal stresses are the plane's two in closed form and zz; otherwise the
+// symmetric tensor's eigen-decomposition. The correction keeps the principal directions.
 class MohrCoulombModel final : public ZoneModel {
  public:
   const char* name() const override { return "mohr-coulomb"; }
@@ -53,6 +91,12 @@ class MohrCoulombModel final : public ZoneModel {
               uint8_t& state) const override {
     state &= kShearPast | kTensionPast;
     elastic_step(p, de, s);
+    if (s.yz != 0 || s.xz != 0) {
+      const Principal pr = principal_3d(s);
+      std::array<double, 3> v = pr.s;
+      if (mohr_coulomb_return(p, v[0], v[1], v[2], state)) s = from_principal(pr, v);
+      return;
+    }
     // Principal stresses: two in the plane, zz out of it.
     double a = 0, b = 0, angle = 0;
     principal_2d(s, a, b, angle);
@@ -60,33 +104,7 @@ class MohrCoulombModel final : public ZoneModel {
     std::array<int, 3> order{0, 1, 2};  // which of (a, b, zz) is s1, s2, s3
     std::sort(order.begin(), order.end(), [&](int i, int j) { return sig[i] < sig[j]; });
     double s1 = sig[order[0]], s2 = sig[order[1]], s3 = sig[order[2]];
-    const double sphi = std::sin(p.friction * kDeg), spsi = std::sin(p.dilation * kDeg);
-    const double nphi = (1 + sphi) / (1 - sphi), npsi = (1 + spsi) / (1 - spsi);
-    const double rn = std::sqrt(nphi);
-    // The tensile strength cannot exceed the apex of the shear cone.
-    double st = p.tension;
-    if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
-    const double a1 = p.bulk + 4.0 * p.shear / 3.0, a2 = p.bulk - 2.0 * p.shear / 3.0;
-    const double fs = s1 - s3 * nphi + 2.0 * p.cohesion * rn;
-    const double ft = st - s3;
-    if (fs >= 0 && ft >= 0) return;
-    // Which failure: the line h = 0 bisects shear and tension regions near the corner.
-    const double alpha_p = std::sqrt(1 + nphi * nphi) + nphi;
-    const double sigma_p = st * nphi - 2.0 * p.cohesion * rn;
-    const double h = s3 - st + alpha_p * (s1 - sigma_p);
-    if (fs < 0 && h <= 0) {
-      const double ls = fs / ((a1 - a2 * npsi) - (a2 - a1 * npsi) * nphi);
-      s1 -= ls * (a1 - a2 * npsi);
-      s2 -= ls * a2 * (1 - npsi);
-      s3 -= ls * (a2 - a1 * npsi);
-      state |= kShearNow | kShearPast;
-    } else {
-      const double lt = ft / a1;
-      s1 += lt * a2;
-      s2 += lt * a2;
-      s3 += lt * a1;
-      state |= kTensionNow | kTensionPast;
-    }
+    if (!mohr_coulomb_return(p, s1, s2, s3, state)) return;
     // Back to x, y: the in-plane principal directions are unchanged.
     std::array<double, 3> out{};
     out[order[0]] = s1, out[order[1]] = s2, out[order[2]] = s3;
@@ -99,7 +117,7 @@ class MohrCoulombModel final : public ZoneModel {
 };
 
 // Drucker-Prager (FLAC's form): fs = tau + q_phi sigma - k_phi with tau = sqrt(J2) and sigma
-// the mean stress; matched to Mohr-Coulomb's compression cone in plane strain
+// the mean stress; matched to Mohr-Coulomb in plane strain
 // (q = tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3c / sqrt(9 + 12 tan^2 phi)); tension cut-off on
 // the mean stress.
 class DruckerPragerModel final : public ZoneModel {
@@ -115,7 +133,8 @@ class DruckerPragerModel final : public ZoneModel {
     const double qpsi = tpsi / std::sqrt(9 + 12 * tpsi * tpsi);
     const double mean = (s.xx + s.yy + s.zz) / 3.0;
     const double dx = s.xx - mean, dy = s.yy - mean, dz = s.zz - mean;
-    const double tau = std::sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + s.xy * s.xy);
+    const double tau =
+        std::sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + s.xy * s.xy + s.yz * s.yz + s.xz * s.xz);
     double st = p.tension;
     if (qphi > 0) st = std::min(st, kphi / qphi);
     const double fs = tau + qphi * mean - kphi;
@@ -137,7 +156,7 @@ class DruckerPragerModel final : public ZoneModel {
     s.xx = new_mean + scale * dx;
     s.yy = new_mean + scale * dy;
     s.zz = new_mean + scale * dz;
-    s.xy *= scale;
+    s.xy *= scale, s.yz *= scale, s.xz *= scale;
   }
 };
 
@@ -153,6 +172,30 @@ void principal_2d(const ZoneStress& s, double& s1, double& s2, double& angle) {
   s1 = c - r, s2 = c + r;
   // Direction of s1 (the smaller, most compressive).
   angle = 0.5 * std::atan2(-2.0 * s.xy, -(s.xx - s.yy));
+}
+
+Principal principal_3d(const ZoneStress& s) {
+  Eigen::Matrix3d m;
+  m << s.xx, s.xy, s.xz, s.xy, s.yy, s.yz, s.xz, s.yz, s.zz;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);  // ascending eigenvalues
+  Principal p;
+  for (int i = 0; i < 3; ++i) {
+    p.s[static_cast<size_t>(i)] = eig.eigenvalues()[i];
+    for (int k = 0; k < 3; ++k)
+      p.axes[static_cast<size_t>(i)][static_cast<size_t>(k)] = eig.eigenvectors()(k, i);
+  }
+  return p;
+}
+
+ZoneStress from_principal(const Principal& p, const std::array<double, 3>& s) {
+  // sigma = sum_i s_i a_i a_i^T
+  auto part = [&](int r, int c) {
+    double v = 0;
+    for (size_t i = 0; i < 3; ++i)
+      v += s[i] * p.axes[i][static_cast<size_t>(r)] * p.axes[i][static_cast<size_t>(c)];
+    return v;
+  };
+  return {part(0, 0), part(1, 1), part(0, 1), part(2, 2), part(1, 2), part(0, 2)};
 }
 
 const ZoneModel* find_zone_model(const std::string& name) {

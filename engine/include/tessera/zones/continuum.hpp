@@ -1,25 +1,29 @@
 // The mechanics of zoned (deformable) material: nodes carrying the motion, uniform-strain
-// triangles carrying the stress (§5.2.1, §5.2.3), stepped with central differences.
+// simplices carrying the stress (§5.2.1, §5.2.3, §5.3.1), stepped with central differences.
+// One kernel for both dimensions: triangles in 2D (plane strain), tetrahedra in 3D.
 //
 // This is the deformable-block kernel on its own: nodes, zones, boundary conditions, in-situ
 // stress, damping and the time step, verified against closed-form solutions (Kirsch's hole, an
-// elastic column, a P-wave, a Mohr-Coulomb plastic zone). Deformable blocks in the model and
-// their contacts with other blocks are built on it (see docs/ARCHITECTURE.md).
+// elastic column, a P-wave, a Mohr-Coulomb plastic zone; in 3D a uniaxial cube, a confined
+// column and a triaxial test). Deformable blocks in the model and their contacts with other
+// blocks are built on it (see docs/ARCHITECTURE.md).
 //
 // Layout: structure of arrays. Nodes: position, initial position, velocity, force, lumped mass,
-// fixity; zones: three node indices (counter-clockwise), stress (tension positive), plastic
-// state and material. A node's mass is the density times the area of its median-dual cell (a
-// third of each zone around it), the barycentric counterpart of the chapter's Voronoi cell.
+// fixity; zones: D + 1 node indices (counter-clockwise triangles, positive-volume tetrahedra),
+// stress (tension positive), plastic state and material. A node's mass is the density times the
+// measure of its median-dual cell (1/(D+1) of each zone around it), the barycentric counterpart
+// of the chapter's Voronoi cell.
 //
 // Nodal mixed discretization (Detournay & Dzik 2006, as in FLAC3D and 3DEC): uniform-strain
 // simplices lock under plastic flow (too few of their modes deform at constant volume), so each
 // cycle the volumetric part of a zone's strain increment is replaced by the mean over its nodes
-// of the area-weighted nodal averages, keeping the zone's own deviatoric part. Under dilatant
+// of the volume-weighted nodal averages, keeping the zone's own deviatoric part. Under dilatant
 // flow the isotropic part of each yielding zone's plastic stress correction is averaged the
 // same way (else it is a zone-by-zone pressure the averaged strain cannot relieve, which grows
 // without bound); isochoric flow (psi = 0) makes no such correction.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -29,67 +33,116 @@
 #include "tessera/core/geometry.hpp"
 #include "tessera/zones/zone_model.hpp"
 #include "tessera/zones/zoning.hpp"
+#include "tessera/zones/zoning3.hpp"
 
 namespace tessera {
 
-struct Continuum {
+// A node's fixity bit for axis k (x, y, z): kFixX, kFixY of blocks.hpp in 2D.
+constexpr uint8_t node_fix_bit(int k) {
+  return static_cast<uint8_t>(1u << k);
+}
+
+// Work arrays of a cycle, kept with the model (not shared between models): the size of the
+// forces meeting at each node (for the unbalanced-force ratio), and per zone the strain
+// increment, volume, volumetric increment, isotropic plastic correction and their nodal
+// averages, with per-node sums and weights.
+struct ZoneScratch {
+  std::vector<double> scale;
+  std::vector<StrainIncrement> de;
+  std::vector<double> volume, ev, ev_mixed, dp, dp_mixed, node_sum, node_weight;
+};
+
+template <int D>
+struct ContinuumT {
+  using Vec = Eigen::Matrix<double, D, 1>;
+  using Zone = std::array<uint32_t, D + 1>;
   // Nodes.
-  std::vector<Vec2> pos, pos0, vel, force, applied;  // applied: constant loads (tractions)
-  std::vector<double> mass;                          // lumped mass: gravity and reported quantities
+  std::vector<Vec> pos, pos0, vel, force, applied;  // applied: constant loads (tractions)
+  std::vector<double> mass;                         // lumped mass: gravity and reported quantities
   std::vector<double> inertia;  // mass in the motion: the lumped mass, or more under scaling
-  std::vector<uint8_t> fixity;  // kFixX | kFixY of blocks.hpp
-  std::vector<Vec2> fixed_vel;
+  std::vector<uint8_t> fixity;  // node_fix_bit(k) for each held axis
+  std::vector<Vec> fixed_vel;
   // Zones.
-  std::vector<std::array<uint32_t, 3>> zones;
+  std::vector<Zone> zones;
   std::vector<ZoneStress> stress;
   std::vector<uint8_t> state;
   std::vector<uint32_t> material;
   std::vector<ZoneProperties> materials;
   // Loading and stepping.
-  Vec2 gravity = Vec2::Zero();
+  Vec gravity = Vec::Zero();
   double local_damping = 0.8;  // UDEC's local damping; 0 for dynamic runs
   double dt = 0.0, time = 0.0;
   uint64_t cycle = 0;
   double ratio = 1.0;       // largest unbalanced force over the mean applied force
   bool nodal_mixed = true;  // nodal mixed discretization (false: plain uniform-strain zones)
+  ZoneScratch scratch;
 
   size_t node_count() const { return pos.size(); }
   size_t zone_count() const { return zones.size(); }
 };
+using Continuum = ContinuumT<2>;   // triangles, plane strain
+using Continuum3 = ContinuumT<3>;  // tetrahedra
 
 // Appends a zone mesh as free nodes and zones of one material; returns the first new node.
 uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material);
-// Lumped nodal masses from the zones' densities and areas (after meshes and material changes).
-void lump_masses(Continuum& c);
+uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material);
+// Lumped nodal masses from the zones' densities and volumes (after meshes and material changes).
+template <int D>
+void lump_masses(ContinuumT<D>& c);
 // A zone's stable step: its height over the P-wave speed (1e300 for a null zone).
-double zone_timestep(const Continuum& c, size_t z);
+template <int D>
+double zone_timestep(const ContinuumT<D>& c, size_t z);
 // Stable time step times `safety`: the smallest zone height over the P-wave speed.
-double critical_timestep(const Continuum& c, double safety = 0.5);
-// Stress in every zone: uniform `s0`, plus `gradient` times (y - y0) (e.g. for gravity).
-void initialize_stress(Continuum& c, const ZoneStress& s0, const ZoneStress& gradient = {},
-                       double y0 = 0.0);
+template <int D>
+double critical_timestep(const ContinuumT<D>& c, double safety = 0.5);
+// Stress in every zone: uniform `s0`, plus `gradient` times the height of the zone's centroid
+// above `v0` (y in 2D, z in 3D; e.g. for gravity).
+template <int D>
+void initialize_stress(ContinuumT<D>& c, const ZoneStress& s0, const ZoneStress& gradient = {},
+                       double v0 = 0.0);
 // Loads from a boundary stress (tension positive) on the outline edges whose two nodes pass
 // `on_edge`: each edge's traction sigma . n times its length, half to each node.
 template <typename Pred>
 void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_node,
                            const ZoneStress& s, Pred on_edge);
+// The same on the surface triangles of a tetrahedral mesh whose three nodes pass `on_face`:
+// each triangle's traction times its area, a third to each node.
+template <typename Pred>
+void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_node,
+                           const ZoneStress& s, Pred on_face);
 // Small strain of a zone from its nodes' displacements on the initial shape.
-void zone_strain(const Continuum& c, size_t z, double& exx, double& eyy, double& exy);
-// Most and least compressive principal stresses of the three (tension positive: s1 <= s3).
+template <int D>
+StrainIncrement total_strain(const ContinuumT<D>& c, size_t z);
+inline void zone_strain(const Continuum& c, size_t z, double& exx, double& eyy, double& exy) {
+  const StrainIncrement e = total_strain(c, z);
+  exx = e.xx, eyy = e.yy, exy = e.xy;
+}
+// Most and least compressive principal stresses (tension positive: s1 <= s3).
 void principal_stresses(const ZoneStress& s, double& s1, double& s3);
-// Area of a zone in its current shape.
-double zone_area(const Continuum& c, size_t z);
+// Area of a triangle, volume of a tetrahedron, in its current shape.
+template <int D>
+double zone_volume(const ContinuumT<D>& c, size_t z);
+inline double zone_area(const Continuum& c, size_t z) {
+  return zone_volume(c, z);
+}
 // One cycle: zone stresses from the strain increments, nodal forces, damping, motion.
-void continuum_cycle(Continuum& c);
+template <int D>
+void continuum_cycle(ContinuumT<D>& c);
 // The two halves of a cycle, for models that add contact forces in between: nodal forces from
 // loads and zones, then damping and motion (sets the ratio; returns the largest node move).
-void zone_forces(Continuum& c);
+template <int D>
+void zone_forces(ContinuumT<D>& c);
 // Adds an outside force (a contact's) to a node between the two halves.
-void add_node_force(Continuum& c, size_t n, const Vec2& f);
-double move_nodes(Continuum& c);
+template <int D>
+void add_node_force(ContinuumT<D>& c, size_t n, const typename ContinuumT<D>::Vec& f);
+template <int D>
+double move_nodes(ContinuumT<D>& c);
 
 // Boundary edges of a mesh (node pairs with the domain on their left), in mesh node numbers.
 std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh);
+// Boundary triangles of a tetrahedral mesh (counter-clockwise seen from outside), in mesh node
+// numbers, in the order of the tetrahedra.
+std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh);
 
 // The nodal mixed discretization's average of a zone field over simplices of N nodes (3:
 // triangles, 4: tetrahedra): at each node the volume-weighted mean of its zones' `value`, then
@@ -133,6 +186,21 @@ void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_no
     const Vec2 nl(d.y(), -d.x());
     const Vec2 t(s.xx * nl.x() + s.xy * nl.y(), s.xy * nl.x() + s.yy * nl.y());
     c.applied[a] += 0.5 * t, c.applied[b] += 0.5 * t;
+  }
+}
+
+template <typename Pred>
+void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_node,
+                           const ZoneStress& s, Pred on_face) {
+  for (const auto& f : boundary_faces(mesh)) {
+    const uint32_t a = first_node + f[0], b = first_node + f[1], d = first_node + f[2];
+    if (!on_face(c.pos[a], c.pos[b], c.pos[d])) continue;
+    // Outward normal times area, then the traction sigma . n, a third to each corner.
+    const Vec3 n = 0.5 * (c.pos[b] - c.pos[a]).cross(c.pos[d] - c.pos[a]);
+    const Vec3 t(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
+                 s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
+                 s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
+    c.applied[a] += t / 3.0, c.applied[b] += t / 3.0, c.applied[d] += t / 3.0;
   }
 }
 
