@@ -128,7 +128,8 @@ int main(int argc, char** argv) {
   double edge = 0.0;
   app.add_option("--scene", scene, "Scene to run")
       ->check(CLI::IsMember({"wall", "wall3d", "zones2d", "column3d"}));
-  app.add_option("--edge", edge, "Zone size of zones2d and column3d (default 0.2 and 0.36 m)");
+  app.add_option("--edge", edge, "Zone size of zones2d and column3d (default 0.2 and 0.36 m)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--cols", cols, "Bricks per course")->check(CLI::PositiveNumber);
   app.add_option("--rows", rows, "Courses")->check(CLI::PositiveNumber);
   app.add_option("--cycles", cycles, "Cycles to run");

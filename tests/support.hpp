@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tessera/script/script.hpp"
+#include "tessera/zones/continuum.hpp"
 
 namespace tessera::test {
 
@@ -29,6 +30,28 @@ std::string incline_script(double psi, double phi, double b = 1.0, double h = 1.
 
 // FNV-1a hash of the dynamic state (positions, velocities, contact stresses), bit for bit.
 uint64_t state_hash(const Model& m);
+
+// The zone tests' rock: density 2000, E = 1 GPa, nu = 0.25, of the given zone model.
+inline ZoneProperties zone_rock(const std::string& model = "elastic") {
+  ZoneProperties p;
+  p.name = "rock";
+  p.model = model;
+  p.density = 2000;
+  elastic_from_young(1e9, 0.25, p.bulk, p.shear);
+  return p;
+}
+
+// Steps a zone mesh at its critical step until the unbalanced-force ratio drops below `ratio`;
+// returns the cycles run.
+template <int D>
+uint64_t solve_zones(ContinuumT<D>& c, double ratio, uint64_t max_cycles) {
+  c.dt = critical_timestep(c);
+  for (uint64_t i = 0; i < max_cycles; ++i) {
+    continuum_cycle(c);
+    if (i > 100 && c.ratio < ratio) return i;
+  }
+  return max_cycles;
+}
 
 // Slope of the least-squares line through (x, y) samples.
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);

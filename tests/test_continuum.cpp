@@ -5,32 +5,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "support.hpp"
 #include "tessera/contact2d/blocks.hpp"
 #include "tessera/zones/continuum.hpp"
 
 using namespace tessera;
+using tessera::test::solve_zones;
+using tessera::test::zone_rock;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-
-ZoneProperties rock(const std::string& model = "elastic") {
-  ZoneProperties p;
-  p.name = "rock";
-  p.model = model;
-  p.density = 2000;
-  elastic_from_young(1e9, 0.25, p.bulk, p.shear);
-  return p;
-}
-
-// Steps until the unbalanced-force ratio drops below `ratio`; returns the cycles run.
-uint64_t solve(Continuum& c, double ratio, uint64_t max_cycles) {
-  c.dt = critical_timestep(c);
-  for (uint64_t i = 0; i < max_cycles; ++i) {
-    continuum_cycle(c);
-    if (i > 100 && c.ratio < ratio) return i;
-  }
-  return max_cycles;
-}
 
 // Quarter of a square of side `r` around a hole of radius `a` (symmetry along both axes).
 std::vector<Vec2> quarter_with_hole(double a, double r, int arc_segments) {
@@ -73,7 +57,7 @@ class TestContinuum : public QObject {
   void columnSettlesUnderGravity() {
     const double h = 10, g = 10;
     Continuum c;
-    c.materials.push_back(rock());
+    c.materials.push_back(zone_rock());
     c.materials[0].finalize();
     add_mesh(c, zone_polygon({{0, 0}, {1, 0}, {1, h}, {0, h}}, 0.25), 0);
     lump_masses(c);
@@ -83,7 +67,7 @@ class TestContinuum : public QObject {
       if (p.x() < 1e-9 || p.x() > 1 - 1e-9) c.fixity[n] |= kFixX;
       if (p.y() < 1e-9) c.fixity[n] |= kFixX | kFixY;
     }
-    const uint64_t cycles = solve(c, 1e-7, 200000);
+    const uint64_t cycles = solve_zones(c, 1e-7, 200000);
     const ZoneProperties& p = c.materials[0];
     const double expected = p.density * g * h * h / (2 * (p.bulk + 4 * p.shear / 3));
     double top = 0;
@@ -101,7 +85,7 @@ class TestContinuum : public QObject {
   void pWaveTravelsAtTheDilatationalSpeed() {
     const double len = 100, v0 = 1e-3;
     Continuum c;
-    c.materials.push_back(rock());
+    c.materials.push_back(zone_rock());
     c.materials[0].finalize();
     add_mesh(c, zone_polygon({{0, 0}, {2, 0}, {2, len}, {0, len}}, 0.5), 0);
     lump_masses(c);
@@ -139,7 +123,7 @@ class TestContinuum : public QObject {
   void kirschHole() {
     const double a = 1, r = 20, sv = 10e6, sh = 5e6;  // compression magnitudes
     Continuum c;
-    c.materials.push_back(rock());
+    c.materials.push_back(zone_rock());
     c.materials[0].finalize();
     ZoneGrading grade{{0, 0}, a, 0.06, 0.2};
     const ZoneMesh mesh = zone_polygon(quarter_with_hole(a, r, 48), 2.0, 2000000, &grade);
@@ -151,7 +135,7 @@ class TestContinuum : public QObject {
     apply_boundary_stress(c, mesh, first, far, [&](const Vec2& p, const Vec2& q) {
       return (p.x() > r - 1e-9 && q.x() > r - 1e-9) || (p.y() > r - 1e-9 && q.y() > r - 1e-9);
     });
-    const uint64_t cycles = solve(c, 2e-6, 300000);
+    const uint64_t cycles = solve_zones(c, 2e-6, 300000);
     QVERIFY(cycles < 300000);
     // Kirsch with p along x (theta from x), q along y, compression positive.
     const double p = sh, q = sv;
@@ -229,7 +213,7 @@ class TestContinuum : public QObject {
     QFETCH(double, dilation);
     const double a = 1, r = 10, p0 = 30e6, coh = 3.45e6, phi = 30;
     Continuum c;
-    c.materials.push_back(rock("mohr-coulomb"));
+    c.materials.push_back(zone_rock("mohr-coulomb"));
     ZoneProperties& m = c.materials[0];
     m.shear = 2.8e9, m.bulk = 3.9e9;
     m.friction = phi, m.cohesion = coh, m.tension = 1e9, m.dilation = dilation;
@@ -244,7 +228,7 @@ class TestContinuum : public QObject {
     apply_boundary_stress(c, mesh, first, far, [&](const Vec2& p, const Vec2& q) {
       return (p.x() > r - 1e-9 && q.x() > r - 1e-9) || (p.y() > r - 1e-9 && q.y() > r - 1e-9);
     });
-    const uint64_t cycles = solve(c, 1e-5, 100000);
+    const uint64_t cycles = solve_zones(c, 1e-5, 100000);
     QVERIFY(cycles < 100000);
     const double sphi = std::sin(phi * kPi / 180), kp = (1 + sphi) / (1 - sphi);
     const double ccot = coh / std::tan(phi * kPi / 180);

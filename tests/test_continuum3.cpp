@@ -6,21 +6,15 @@
 #include <QtTest>
 #include <cmath>
 
+#include "support.hpp"
 #include "tessera/zones/continuum.hpp"
 #include "tessera/zones/zoning3.hpp"
 
 using namespace tessera;
+using tessera::test::solve_zones;
+using tessera::test::zone_rock;
 
 namespace {
-ZoneProperties rock(const std::string& model = "elastic") {
-  ZoneProperties p;
-  p.name = "rock";
-  p.model = model;
-  p.density = 2000;
-  elastic_from_young(1e9, 0.25, p.bulk, p.shear);
-  return p;
-}
-
 Continuum3 block(const Vec3& hi, double h, const ZoneProperties& p, ZoneMesh3* out = nullptr) {
   const ZoneMesh3 mesh = zone_polyhedron(box(Vec3::Zero(), hi), h);
   Continuum3 c;
@@ -40,16 +34,6 @@ void rollers(Continuum3& c, const Vec3& hi, bool box_sides) {
       const double x = c.pos0[n][k];
       if (x < eps || (box_sides && k < 2 && x > hi[k] - eps)) c.fixity[n] |= node_fix_bit(k);
     }
-}
-
-// Steps until the unbalanced-force ratio drops below `ratio`; returns the cycles run.
-uint64_t solve(Continuum3& c, double ratio, uint64_t max_cycles) {
-  c.dt = critical_timestep(c);
-  for (uint64_t i = 0; i < max_cycles; ++i) {
-    continuum_cycle(c);
-    if (i > 100 && c.ratio < ratio) return i;
-  }
-  return max_cycles;
 }
 
 Vec3 centroid(const Continuum3& c, size_t z) {
@@ -82,14 +66,14 @@ class TestContinuum3 : public QObject {
   void cubeInUniaxialStress() {
     const Vec3 hi(1, 1, 1);
     ZoneMesh3 mesh;
-    Continuum3 c = block(hi, 0.3, rock(), &mesh);
+    Continuum3 c = block(hi, 0.3, zone_rock(), &mesh);
     rollers(c, hi, false);
     const double p = 1e6;
     apply_boundary_stress(c, mesh, 0, ZoneStress{0, 0, 0, -p, 0, 0},
                           [](const Vec3& a, const Vec3& b, const Vec3& d) {
                             return a.z() > 1 - 1e-9 && b.z() > 1 - 1e-9 && d.z() > 1 - 1e-9;
                           });
-    const uint64_t cycles = solve(c, 1e-7, 200000);
+    const uint64_t cycles = solve_zones(c, 1e-7, 200000);
     qInfo("%zu zones, %llu cycles", c.zone_count(), static_cast<unsigned long long>(cycles));
     QVERIFY2(cycles < 200000, "did not converge");
     const double e = 1e9, nu = 0.25;
@@ -112,11 +96,11 @@ class TestContinuum3 : public QObject {
   // sigma_xx = sigma_yy = nu / (1 - nu) sigma_zz, settlement of the top rho g H^2 / (2 M).
   void confinedColumnUnderGravity() {
     const Vec3 hi(1, 1, 10);
-    Continuum3 c = block(hi, 0.5, rock());
+    Continuum3 c = block(hi, 0.5, zone_rock());
     rollers(c, hi, true);
     const double g = 10, rho = 2000, height = 10, nu = 0.25;
     c.gravity = Vec3(0, 0, -g);
-    const uint64_t cycles = solve(c, 1e-6, 400000);
+    const uint64_t cycles = solve_zones(c, 1e-6, 400000);
     qInfo("%zu zones, %llu cycles", c.zone_count(), static_cast<unsigned long long>(cycles));
     QVERIFY2(cycles < 400000, "did not converge");
     const ZoneProperties& p = c.materials[0];
@@ -153,7 +137,7 @@ class TestContinuum3 : public QObject {
   void triaxialTestReachesTheCoulombStrength() {
     QFETCH(double, confinement);
     const Vec3 hi(1, 1, 1);
-    ZoneProperties mc = rock("mohr-coulomb");
+    ZoneProperties mc = zone_rock("mohr-coulomb");
     elastic_from_young(10e9, 0.25, mc.bulk, mc.shear);  // yield before 0.2% strain
     mc.cohesion = 1e6, mc.friction = 30, mc.dilation = 0, mc.tension = 1e6;
     ZoneMesh3 mesh;
@@ -199,7 +183,7 @@ class TestContinuum3 : public QObject {
   void modelsDoNotShareWorkArrays() {
     const Vec3 hi(1, 1, 1);
     auto make = [&](double g) {
-      Continuum3 c = block(hi, 0.5, rock());
+      Continuum3 c = block(hi, 0.5, zone_rock());
       rollers(c, hi, false);
       c.gravity = Vec3(0, 0, -g);
       c.dt = critical_timestep(c);
