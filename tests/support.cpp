@@ -54,6 +54,8 @@ uint64_t state_hash(const Model& m) {
   mix_vec(h, C.fn), mix_vec(h, C.fs), mix_vec(h, C.a), mix_vec(h, C.corner);
   const Continuum& Z = m.continuum;
   mix_vec(h, Z.pos), mix_vec(h, Z.vel), mix_vec(h, Z.stress), mix_vec(h, Z.state);
+  const Continuum3& Z3 = m.continuum3;
+  mix_vec(h, Z3.pos), mix_vec(h, Z3.vel), mix_vec(h, Z3.stress), mix_vec(h, Z3.state);
   for (const RigidBody3& b : m.blocks3.body)
     mix(h, b.position.data(), 24), mix(h, b.velocity.data(), 24), mix(h, b.momentum.data(), 24),
         mix(h, b.orientation.coeffs().data(), 32);

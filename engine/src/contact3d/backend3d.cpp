@@ -136,6 +136,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   out.reset(n);
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
+      if (B.deformable[b]) continue;  // its nodes move in the zone stage
       RigidBody3& body = B.body[b];
       const uint8_t fix = B.fixity[b];
       out.moves[b] = body.mass > 0.0 && (fix & 7) != 7;

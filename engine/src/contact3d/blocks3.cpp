@@ -9,18 +9,6 @@ namespace tessera {
 
 namespace {
 
-// Unit normal of a planar polygon by Newell's method (robust for nearly collinear vertices).
-Vec3 newell_normal(const std::vector<Vec3>& v, const std::vector<uint32_t>& face) {
-  Vec3 n = Vec3::Zero();
-  for (size_t k = 0; k < face.size(); ++k) {
-    const Vec3& p = v[face[k]];
-    const Vec3& q = v[face[(k + 1) % face.size()]];
-    n += Vec3((p.y() - q.y()) * (p.z() + q.z()), (p.z() - q.z()) * (p.x() + q.x()),
-              (p.x() - q.x()) * (p.y() + q.y()));
-  }
-  return n.normalized();
-}
-
 // Copies block b of src onto the end of dst.
 void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.body.push_back(src.body[b]);
@@ -35,10 +23,14 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.group.push_back(src.group[b]), dst.material.push_back(src.material[b]);
   dst.master.push_back(src.master[b]);  // renumbered by the caller
   dst.id.push_back(static_cast<int>(dst.id.size()) + 1);
+  dst.deformable.push_back(src.deformable[b]);
+  dst.node_begin.push_back(src.node_begin[b]), dst.node_end.push_back(src.node_end[b]);
+  dst.zone_begin.push_back(src.zone_begin[b]), dst.zone_end.push_back(src.zone_end[b]);
   const uint32_t v_shift = dst.vert_begin.back() - src.vert_begin[b];
   for (uint32_t v = src.vert_begin[b]; v < src.vert_begin[b + 1]; ++v)
     dst.local_vertex.push_back(src.local_vertex[v]),
-        dst.world_vertex.push_back(src.world_vertex[v]);
+        dst.world_vertex.push_back(src.world_vertex[v]),
+        dst.vertex_node.push_back(src.vertex_node[v]);
   dst.vert_begin.push_back(static_cast<uint32_t>(dst.local_vertex.size()));
   for (uint32_t f = src.face_begin[b]; f < src.face_begin[b + 1]; ++f) {
     for (uint32_t k = src.fv_begin[f]; k < src.fv_begin[f + 1]; ++k)
@@ -48,6 +40,9 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
         dst.world_normal.push_back(src.world_normal[f]);
     dst.local_offset.push_back(src.local_offset[f]);
     dst.world_offset.push_back(src.world_offset[f]), dst.face_tag.push_back(src.face_tag[f]);
+    for (uint32_t t = src.ftri_begin[f]; t < src.ftri_begin[f + 1]; ++t)
+      dst.ftri.push_back(src.ftri[t]);
+    dst.ftri_begin.push_back(static_cast<uint32_t>(dst.ftri.size()));
   }
   dst.face_begin.push_back(static_cast<uint32_t>(dst.local_normal.size()));
   for (uint32_t d = src.dir_begin[b]; d < src.dir_begin[b + 1]; ++d)
@@ -83,12 +78,15 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   group.push_back(group_id), material.push_back(material_id);
   id.push_back(static_cast<int>(b) + 1);
   master.push_back(static_cast<int32_t>(b));
+  deformable.push_back(0);
+  node_begin.push_back(0), node_end.push_back(0), zone_begin.push_back(0), zone_end.push_back(0);
   // Shape in the principal frame about the centroid.
   const Mat3 to_local = rb.orientation.conjugate().toRotationMatrix();
   const uint32_t v0 = vert_begin.back();
   for (const Vec3& v : p.vertices) {
     local_vertex.push_back(to_local * (v - s.centroid));
     world_vertex.push_back(v);
+    vertex_node.push_back(-1);
   }
   vert_begin.push_back(static_cast<uint32_t>(local_vertex.size()));
   double area = 0.0;
@@ -116,6 +114,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
     world_normal.push_back(normals[f]);
     world_offset.push_back(normals[f].dot(p.vertices[face[0]]));
     face_tag.push_back(f < face_tags.size() ? face_tags[f] : -1);
+    ftri_begin.push_back(static_cast<uint32_t>(ftri.size()));
   }
   face_begin.push_back(static_cast<uint32_t>(local_normal.size()));
   for (const Vec3& d : dirs) local_dir.push_back(d), world_dir.push_back(Vec3::Zero());

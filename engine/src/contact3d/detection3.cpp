@@ -65,8 +65,8 @@ void detect_contacts3(Model& m) {
   auto& old = m.contacts3;
   for (const auto& [lo, hi] : broad_phase3(block_boxes3(B, 0.5 * tol))) {
     const auto mlo = static_cast<size_t>(B.master[lo]), mhi = static_cast<size_t>(B.master[hi]);
-    // Pieces of one body never touch; nor do two held bodies.
-    if (mlo == mhi || (B.fixity[mlo] == kFix3All && B.fixity[mhi] == kFix3All)) continue;
+    // Pieces of one body never touch; nor do two held bodies (a deformable block is not held).
+    if (mlo == mhi || (B.held(mlo) && B.held(mhi))) continue;
     const PlaneFit fit = best_plane(B, lo, hi);
     if (fit.gap > tol) continue;
     while (j < old.size() && std::make_pair(old[j].a, old[j].b) < std::make_pair(lo, hi)) ++j;
@@ -94,6 +94,7 @@ void detect_contacts3(Model& m) {
   m.det_pos3.resize(B.size()), m.det_q3.resize(B.size());
   for (size_t b = 0; b < B.size(); ++b)
     m.det_pos3[b] = B.body[b].position, m.det_q3[b] = B.body[b].orientation;
+  m.det_node3 = m.continuum3.pos;
   m.detection_due = false;
   ++m.detection_passes;
 }

@@ -91,4 +91,15 @@ Polyhedron prism(const std::vector<Eigen::Vector2d>& base, double z0, double z1)
   return p;
 }
 
+Vec3 newell_normal(const std::vector<Vec3>& v, std::span<const uint32_t> face) {
+  Vec3 n = Vec3::Zero();
+  for (size_t k = 0; k < face.size(); ++k) {
+    const Vec3& p = v[face[k]];
+    const Vec3& q = v[face[(k + 1) % face.size()]];
+    n += Vec3((p.y() - q.y()) * (p.z() + q.z()), (p.z() - q.z()) * (p.x() + q.x()),
+              (p.x() - q.x()) * (p.y() + q.y()));
+  }
+  return n.normalized();
+}
+
 }  // namespace tessera

@@ -5,27 +5,36 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact3d/face_overlap.hpp"
 #include "tessera/contact2d/contacts.hpp"
 #include "tessera/contact3d/common_plane.hpp"
 
 namespace tessera {
 
-namespace {
-
-// Keys: what made a corner of the overlap polygon.
-constexpr uint64_t kKeyVertexA = 1ull << 62, kKeyVertexB = 2ull << 62, kKeyCross = 3ull << 62;
-// Edge identities while clipping: A's edges are face_vert positions, B's are offset by this.
-constexpr uint64_t kEdgeB = 1ull << 31;
-
-struct PolyVertex {
-  Eigen::Vector2d p;
-  uint64_t key;
-  uint64_t next_edge;  // the edge from this vertex to the next
-};
-
-inline double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-  return u.x() * v.y() - u.y() * v.x();
+void carry_state(const Model& m, const Contact3& c, SubContact& s,
+                 const std::vector<SubContact>& old, std::vector<uint8_t>& used) {
+  int match = -1;
+  for (size_t o = 0; o < old.size() && match < 0; ++o)
+    if (!used[o] && old[o].key == s.key) match = static_cast<int>(o);
+  double best = m.tolerance();
+  for (size_t o = 0; o < old.size() && match < 0; ++o) {
+    const double d = (old[o].point - s.point).norm();
+    if (!used[o] && d < best) best = d, match = static_cast<int>(o);
+  }
+  if (match < 0) {
+    if (m.cycle == 0 && s.gap <= m.bond_gap()) {
+      const JointProperties& jp = m.joints[c.joint];
+      if (jp.cohesion > 0.0 || jp.tension > 0.0) s.flags |= kBonded;
+    }
+    return;
+  }
+  const SubContact& o = old[static_cast<size_t>(match)];
+  used[static_cast<size_t>(match)] = 1;
+  s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
+  s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags;
 }
+
+namespace {
 
 // The face of block b that faces the plane: of the faces through its vertex nearest the plane
 // (support value `support` along `dir`, outwards), the one whose outward normal is most nearly
@@ -52,48 +61,6 @@ uint32_t facing_face(const Blocks3& B, uint32_t b, const Vec3& dir, double suppo
   return best;
 }
 
-// Clips polygon `poly` (counter-clockwise) by the counter-clockwise convex polygon `clip`
-// (Sutherland-Hodgman), keeping track of the features that make every corner.
-void clip_polygon(std::vector<PolyVertex>& poly, const std::vector<PolyVertex>& clip,
-                  const std::vector<uint32_t>& clip_vertex, double eps,
-                  std::vector<PolyVertex>& scratch) {
-  const size_t nc = clip.size();
-  for (size_t j = 0; j < nc && !poly.empty(); ++j) {
-    const Eigen::Vector2d q0 = clip[j].p, q1 = clip[(j + 1) % nc].p, e = q1 - q0;
-    const uint64_t edge_j = clip[j].next_edge;
-    scratch.clear();
-    const size_t n = poly.size();
-    for (size_t i = 0; i < n; ++i) {
-      const PolyVertex& s = poly[i];
-      const PolyVertex& t = poly[(i + 1) % n];
-      const double ds = cross2(e, s.p - q0), dt = cross2(e, t.p - q0);
-      const bool s_in = ds >= -eps, t_in = dt >= -eps;
-      // Where edge s-t meets clip line j: an A edge crossing a B edge, or a corner of B.
-      const auto meet = [&](uint64_t next) {
-        const double r = ds / (ds - dt);
-        uint64_t key;
-        if (s.next_edge & kEdgeB) {
-          const uint32_t i_edge = static_cast<uint32_t>(s.next_edge & (kEdgeB - 1));
-          const uint32_t j_edge = static_cast<uint32_t>(edge_j & (kEdgeB - 1));
-          key = kKeyVertexB | clip_vertex[(i_edge + 1) % nc == j_edge ? j_edge : i_edge];
-        } else {
-          key = kKeyCross | (s.next_edge << 31) | (edge_j & (kEdgeB - 1));
-        }
-        return PolyVertex{s.p + r * (t.p - s.p), key, next};
-      };
-      if (s_in && t_in) {
-        scratch.push_back(t);
-      } else if (s_in && !t_in) {
-        if (ds > eps) scratch.push_back(meet(edge_j));
-      } else if (!s_in && t_in) {
-        if (dt > eps) scratch.push_back(meet(s.next_edge));
-        scratch.push_back(t);
-      }
-    }
-    poly.swap(scratch);
-  }
-}
-
 // Scratch space of one thread.
 struct Work {
   std::vector<PolyVertex> poly, clip, scratch;
@@ -103,22 +70,11 @@ struct Work {
 };
 thread_local Work work;
 
-// Tangent basis of a plane (t1 x t2 = n).
-std::pair<Vec3, Vec3> tangents(const Vec3& n) {
-  const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-  return {t1, n.cross(t1)};
-}
-
 // Builds the sub-contacts afresh: facing faces, their overlap on the plane, areas, gaps, and the
 // joint state carried over from the sub-contacts before.
-void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
+void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
-  const Vec3 n = fit.normal;
-  const double lo_a = fit.lo_a, hi_b = fit.hi_b;
-  c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
-  c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
-  c.face_b = facing_face(B, b, n, hi_b, c.face_b);
   const auto [t1, t2] = tangents(n);
   const auto project = [&](const Vec3& x) { return Eigen::Vector2d(x.dot(t1), x.dot(t2)); };
   // a's face is counter-clockwise seen from below the plane: walk it backwards.
@@ -156,7 +112,6 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
   const double mna = ma.dot(n), mnb = mb.dot(n);
-  const double tol = m.tolerance();
   std::vector<uint8_t>& used = w.used;
   used.assign(w.old.size(), 0);
   for (size_t i = 0; i < np && std::abs(mna) > 0.05 && std::abs(mnb) > 0.05; ++i) {
@@ -171,30 +126,24 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
     // Heights of the two faces above the plane along n.
     const double ha = (da - ma.dot(s.point)) / mna, hb = (db - mb.dot(s.point)) / mnb;
     s.gap = ha - hb;
-    // The joint state of last cycle's sub-contact with this key, or else the nearest within
-    // the tolerance (blocks move far less in a step).
-    int match = -1;
-    for (size_t o = 0; o < w.old.size() && match < 0; ++o)
-      if (!used[o] && w.old[o].key == s.key) match = static_cast<int>(o);
-    double best = tol;
-    for (size_t o = 0; o < w.old.size() && match < 0; ++o) {
-      const double d = (w.old[o].point - s.point).norm();
-      if (!used[o] && d < best) best = d, match = static_cast<int>(o);
-    }
-    if (match < 0) {
-      // A new sub-contact of a contact bonded when the model was made is bonded too.
-      if (m.cycle == 0 && s.gap <= m.bond_gap()) {
-        const JointProperties& jp = m.joints[c.joint];
-        if (jp.cohesion > 0.0 || jp.tension > 0.0) s.flags |= kBonded;
-      }
-    } else {
-      const SubContact& o = w.old[static_cast<size_t>(match)];
-      used[static_cast<size_t>(match)] = 1;
-      s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
-      s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags;
-    }
+    carry_state(m, c, s, w.old, used);
     c.subs.push_back(s);
   }
+}
+
+void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
+  const Blocks3& B = m.blocks3;
+  const uint32_t a = c.a, b = c.b;
+  const Vec3 n = fit.normal;
+  const double lo_a = fit.lo_a, hi_b = fit.hi_b;
+  c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
+  c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
+  c.face_b = facing_face(B, b, n, hi_b, c.face_b);
+  if (B.deformable[a] || B.deformable[b])
+    rebuild_node_subcontacts(m, c, n);
+  else
+    corner_subcontacts(m, c, n);
+  const double tol = m.tolerance();
   // Contact type from the vertices of each block within the tolerance of the plane.
   int near_a = 0, near_b = 0;
   for (uint32_t v = B.vert_begin[a]; v < B.vert_begin[a + 1]; ++v)
@@ -209,6 +158,7 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
 // between the two facing faces' planes along the plane's normal.
 void follow(const Model& m, Contact3& c, const Vec3& n) {
   const Blocks3& B = m.blocks3;
+  if (B.deformable[c.a] || B.deformable[c.b]) return follow_node_subcontacts(m, c, n);
   const auto ma = static_cast<size_t>(B.master[c.a]);
   const RigidBody3& ba = B.body[ma];
   const Vec3 ma_n = B.world_normal[c.face_a], mb_n = B.world_normal[c.face_b];
@@ -265,13 +215,16 @@ double joint_forces3(const Model& m, Contact3& c) {
   const Vec3& wb = B.omega[mb_body];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
-  double deepest = 0.0;
+  double deepest = 0.0, fastest = 0.0;
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
     const double overlap = without_roundoff(-s.gap, roundoff);
     const double un = overlap + s.dilation;
     if (stays_open(un, s.fn, s.flags)) {
       s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();
+      if (s.node >= 0)
+        fastest = std::max(fastest,
+                           (side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1)).squaredNorm());
       continue;
     }
     // Last cycle's shear force turned into the plane, its magnitude kept.
@@ -283,7 +236,9 @@ double joint_forces3(const Model& m, Contact3& c) {
       fs *= std::sqrt(fs2 / fs.squaredNorm());
     }
     const Vec3 ra = s.point - ba.position, rb = s.point - bb.position;
-    const Vec3 dv = (ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb));
+    const Vec3 dv = s.node < 0 ? Vec3((ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb)))
+                               : Vec3(side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1));
+    fastest = std::max(fastest, dv.squaredNorm());
     JointState st{s.fn, fs.dot(t1), s.un_prev, s.dilation, s.sd1, s.flags, fs.dot(t2), s.sd2};
     jp.impl->update(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
     s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
@@ -298,8 +253,10 @@ double joint_forces3(const Model& m, Contact3& c) {
   // How far any point of one block may have moved against the other this step (translation
   // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
   // hundredth of the tolerance.
+  // A deformable block's nodes move on their own: the fastest sub-contact counts as well.
   c.drift += dt * ((ba.velocity - bb.velocity).norm() + wa.norm() * B.bound_radius[a] +
                    wb.norm() * B.bound_radius[b]);
+  if (B.deformable[a] || B.deformable[b]) c.drift += dt * std::sqrt(fastest);
   return deepest;
 }
 

@@ -13,8 +13,43 @@ namespace tessera {
 namespace {
 // A quantity of block b of a 3D model: rotation is the angle turned since it was made (radians),
 // angvel the magnitude of the angular velocity.
-double history_value3(const Model& m, HistoryQuantity q, size_t b) {
+// A node of a deformable 3D block (its displacement, velocity, position); no rotation.
+double node_value3(const Continuum3& c, HistoryQuantity q, size_t n) {
+  switch (q) {
+    case HistoryQuantity::kXDisp:
+    case HistoryQuantity::kYDisp:
+    case HistoryQuantity::kZDisp: {
+      const int k = q == HistoryQuantity::kXDisp ? 0 : q == HistoryQuantity::kYDisp ? 1 : 2;
+      return c.pos[n][k] - c.pos0[n][k];
+    }
+    case HistoryQuantity::kXVel:
+      return c.vel[n].x();
+    case HistoryQuantity::kYVel:
+      return c.vel[n].y();
+    case HistoryQuantity::kZVel:
+      return c.vel[n].z();
+    case HistoryQuantity::kXPos:
+      return c.pos[n].x();
+    case HistoryQuantity::kYPos:
+      return c.pos[n].y();
+    case HistoryQuantity::kZPos:
+      return c.pos[n].z();
+    default:
+      return 0.0;
+  }
+}
+
+double history_value3(const Model& m, HistoryQuantity q, size_t b, int32_t node) {
   const Blocks3& B = m.blocks3;
+  // A deformable block: its node nearest the point asked for, or the mean of its corners.
+  if (node >= 0 && static_cast<size_t>(node) < m.continuum3.node_count())
+    return node_value3(m.continuum3, q, static_cast<size_t>(node));
+  if (B.deformable[b]) {
+    double sum = 0.0;
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+      sum += node_value3(m.continuum3, q, static_cast<size_t>(B.vertex_node[v]));
+    return sum / static_cast<double>(B.vert_begin[b + 1] - B.vert_begin[b]);
+  }
   b = static_cast<size_t>(B.master[b]);  // a piece of a concave block moves with its master
   const RigidBody3& body = B.body[b];
   switch (q) {
@@ -102,7 +137,7 @@ double history_value(const Model& m, const HistorySeries& s) {
   // A block history whose block was deleted (-2) reads NaN from then on.
   if (s.block == -2) return std::nan("");
   const auto b = static_cast<size_t>(std::max(0, s.block));
-  if (m.dim == 3 && s.block >= 0) return history_value3(m, s.quantity, b);
+  if (m.dim == 3 && s.block >= 0) return history_value3(m, s.quantity, b, s.node);
   // Deformable blocks: a node's displacement, velocity and position, or (for the block as a
   // whole) their means over its outline nodes; no rotation.
   const bool one_node = s.node >= 0 && static_cast<size_t>(s.node) < m.continuum.node_count();

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/zones/deformable3.hpp"
+
 namespace tessera {
 
 size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
@@ -22,6 +24,9 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
   std::vector<size_t> owner;
   for (size_t b = 0; b < B.size(); ++b) {
     if (!chosen[b]) continue;
+    if (B.deformable[b])
+      throw std::invalid_argument("block " + std::to_string(B.id[b]) +
+                                  " is deformable: cut blocks before 'zone generate'");
     CutBlock c;
     c.poly = B.polyhedron(b);
     c.face_tags.assign(B.face_tag.begin() + B.face_begin[b],
@@ -106,6 +111,9 @@ void join_blocks3(Model& m, const std::vector<size_t>& blocks) {
   const std::vector<size_t> pieces = whole_bodies3(B, blocks);
   std::vector<double> densities;
   for (size_t b : pieces) {
+    if (B.deformable[b])
+      throw std::invalid_argument("block " + std::to_string(B.id[b]) +
+                                  " is deformable: join blocks before 'zone generate'");
     const int k = B.material[b];
     densities.push_back(k >= 0 ? m.materials[static_cast<size_t>(k)].density : 0.0);
     if (!(densities.back() > 0.0))
@@ -128,6 +136,7 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t b : blocks) doomed[b] = 1;
   const std::vector<uint32_t> old_face = B.face_begin;
+  drop_deformable3(m, doomed);
   const std::vector<int> map = B.remove(doomed);
   // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
   std::vector<Contact3> kept;
@@ -143,6 +152,7 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
     // Edge directions and vertex keys are renumbered too: the next pass finds the plane anew.
     if (c.kind == kPlaneEdges) m.detection_due = true;
     for (SubContact& s : c.subs) s.key = 0;
+    c.drift = 1e300;  // node numbers changed: the sub-contacts are built afresh
     c.a = na, c.b = nb;
     kept.push_back(std::move(c));
   }

@@ -125,6 +125,33 @@ void check_blocks3(Checker& c, const Model& m) {
   c.size(B.world_offset, nf, "3D face planes"), c.size(B.face_tag, nf, "3D face tags");
   c.offsets(B.dir_begin, n, B.local_dir.size(), "3D edge direction offsets");
   c.size(B.world_dir, B.local_dir.size(), "3D edge directions");
+  c.size(B.deformable, n, "3D deformable flags"), c.size(B.vertex_node, nv, "3D corner nodes");
+  c.offsets(B.ftri_begin, nf, B.ftri.size(), "3D surface triangle offsets");
+  for (auto* r : {&B.node_begin, &B.node_end, &B.zone_begin, &B.zone_end})
+    c.size(*r, n, "3D node and zone ranges");
+  const Continuum3& Z = m.continuum3;
+  const size_t nn = Z.pos.size(), nz = Z.zones.size();
+  c.size(Z.pos0, nn, "3D node origins"), c.size(Z.vel, nn, "3D node velocities");
+  c.size(Z.force, nn, "3D node forces"), c.size(Z.applied, nn, "3D node loads");
+  c.size(Z.mass, nn, "3D node masses"), c.size(Z.inertia, nn, "3D node inertias");
+  c.size(Z.fixity, nn, "3D node fixity"), c.size(Z.fixed_vel, nn, "3D node fixed velocities");
+  c.size(Z.stress, nz, "3D zone stresses"), c.size(Z.state, nz, "3D zone states");
+  c.size(Z.material, nz, "3D zone materials");
+  if (!c.ok()) return;
+  for (size_t z = 0; z < nz && c.ok(); ++z) {
+    for (uint32_t k : Z.zones[z]) c.require(k < nn, name("3D zone", z) + " names a missing node");
+    c.require(Z.material[z] <= m.materials.size(),
+              name("3D zone", z) + " names a missing material");
+  }
+  for (const auto& t : B.ftri)
+    for (uint32_t k : t) c.require(k < nn, "a 3D surface triangle names a missing node");
+  for (size_t v = 0; v < nv; ++v)
+    c.require(B.vertex_node[v] >= -1 && B.vertex_node[v] < int64_t(nn),
+              "a 3D block corner names a missing node");
+  for (size_t b = 0; b < n; ++b)
+    c.require(B.node_begin[b] <= B.node_end[b] && B.node_end[b] <= nn &&
+                  B.zone_begin[b] <= B.zone_end[b] && B.zone_end[b] <= nz,
+              name("block", b) + " names nodes or zones that do not exist");
   if (!c.ok()) return;
   for (size_t b = 0; b < n && c.ok(); ++b) {
     const std::string who = name("block", b);
@@ -160,6 +187,11 @@ void check_blocks3(Checker& c, const Model& m) {
                                       k.ib >= B.dir_begin[k.b] && k.ib < B.dir_begin[k.b + 1]
                                 : false;
     c.require(fits, who + " has a common plane from features of other blocks");
+    for (const SubContact& s : k.subs) {
+      bool nodes = s.node >= -1 && s.node < int64_t(nn) && s.node_side < 2;
+      for (int32_t t : s.tri) nodes = nodes && t >= -1 && t < int64_t(nn);
+      c.require(nodes, who + " has a sub-contact at a node that does not exist");
+    }
   }
 }
 
@@ -191,7 +223,8 @@ void check_rest(Checker& c, const Model& m) {
     const HistorySeries& h = H.series[s];
     c.require(h.block >= -2 && h.block < int64_t(m.block_count()),
               "history '" + h.label + "' names a block that does not exist");
-    c.require(h.node >= -1 && h.node < int64_t(nn),
+    const size_t nodes = m.dim == 3 ? m.continuum3.pos.size() : nn;
+    c.require(h.node >= -1 && h.node < int64_t(nodes),
               "history '" + h.label + "' names a node that does not exist");
   }
   c.require(m.dim == 2 || m.dim == 3, "the dimension is neither 2 nor 3");

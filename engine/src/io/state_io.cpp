@@ -10,13 +10,14 @@
 
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/zones/deformable.hpp"
+#include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
 
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 8;
+constexpr uint32_t kVersion = 9;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -25,7 +26,7 @@ static_assert(sizeof(Vec2) == 2 * sizeof(double));
 template <class F>
 void members(const SubContact& s, F f) {
   f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
-  f(s.sd2), f(s.fs), f(s.flags), f(s.force);
+  f(s.sd2), f(s.fs), f(s.flags), f(s.force), f(s.node), f(s.node_side), f(s.tri), f(s.weight);
 }
 template <class F>
 void members(const RigidBody3& b, F f) {
@@ -206,6 +207,14 @@ void fields(IO& io, auto& m) {
       io.vec(B3.world_offset);
   io.vec(B3.face_tag), io.vec(B3.dir_begin), io.vec(B3.local_dir), io.vec(B3.world_dir);
   io.vec(B3.group), io.vec(B3.material), io.vec(B3.id), io.vec(B3.master);
+  io.vec(B3.deformable), io.vec(B3.vertex_node), io.vec(B3.ftri_begin), io.vec(B3.ftri);
+  io.vec(B3.node_begin), io.vec(B3.node_end), io.vec(B3.zone_begin), io.vec(B3.zone_end);
+  auto& Z3 = m.continuum3;
+  io.vec(Z3.pos), io.vec(Z3.pos0), io.vec(Z3.vel), io.vec(Z3.force), io.vec(Z3.applied);
+  io.vec(Z3.mass), io.vec(Z3.inertia), io.vec(Z3.fixity), io.vec(Z3.fixed_vel);
+  io.vec(Z3.zones), io.vec(Z3.stress), io.vec(Z3.state), io.vec(Z3.material);
+  io.pod(Z3.local_damping), io.pod(Z3.dt), io.pod(Z3.time), io.pod(Z3.cycle), io.pod(Z3.ratio);
+  io.vec(m.det_node3);
   count = m.contacts3.size();
   io.items(count);
   m.contacts3.resize(count);
@@ -257,12 +266,14 @@ Model restore_state(const std::string& path) {
     if (!mat.zone.model.empty()) mat.zone.finalize();
   sync_zone_materials(m);
   m.continuum.gravity = m.settings.gravity;
+  m.continuum3.gravity = m.settings.gravity3;
   // World caches are a pure function of the saved positions.
   m.blocks.world_vertex.resize(m.blocks.local_vertex.size());
   m.blocks.world_arc_centre.resize(m.blocks.local_vertex.size());
   m.blocks.world_edge_dir.resize(m.blocks.local_vertex.size());
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
   update_deformable_world(m);
+  update_deformable_world3(m);
   m.build_block_contacts();
   return m;
 }

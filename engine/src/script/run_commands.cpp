@@ -142,8 +142,14 @@ void Interpreter::cmd_history(Args& a) {
     const bool has_label = take(a, "label", label);
     // For a deformable block, its node nearest the point (or the centroid).
     Vec2 where(std::nan(""), std::nan(""));
-    for (const auto& kv : a.keys)
-      if (kv.first == "at" && model_.dim == 2) where = point(kv.second);
+    Vec3 where3 = Vec3::Constant(std::nan(""));
+    for (const auto& kv : a.keys) {
+      if (kv.first != "at") continue;
+      if (model_.dim == 2)
+        where = point(kv.second);
+      else
+        where3 = point3(kv.second);
+    }
     const auto sel = select(a);
     if (sel.size() != 1) fail("a block history needs exactly one block (block=ID or at=X,Y)");
     s.block = static_cast<int32_t>(sel[0]);
@@ -155,6 +161,15 @@ void Interpreter::cmd_history(Args& a) {
       for (size_t n = 0; n < c.node_count(); ++n)
         if (const double d = (c.pos[n] - where).norm();
             d < best && owner[n] == static_cast<int>(sel[0]))
+          best = d, s.node = static_cast<int32_t>(n);
+    }
+    if (model_.dim == 3 && model_.blocks3.deformable[sel[0]]) {
+      const Blocks3& B = model_.blocks3;
+      if (std::isnan(where3.x())) where3 = B.body[sel[0]].position;
+      const Continuum3& c = model_.continuum3;
+      double best = 1e300;
+      for (uint32_t n = B.node_begin[sel[0]]; n < B.node_end[sel[0]]; ++n)
+        if (const double d = (c.pos[n] - where3).norm(); d < best)
           best = d, s.node = static_cast<int32_t>(n);
     }
     s.label = has_label         ? label

@@ -6,41 +6,137 @@
 #include "tessera/script/expr.hpp"
 #include "tessera/script/script.hpp"
 #include "tessera/zones/deformable.hpp"
+#include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
 
-namespace {
-// A box of nodes from x=X0,X1 and y=Y0,Y1 (either may be left out).
+// A box of nodes from x=X0,X1, y=Y0,Y1 and (3D) z=Z0,Z1 (any may be left out).
 struct NodeBox {
-  double x0 = -std::numeric_limits<double>::infinity(), x1 = -x0;
-  double y0 = x0, y1 = x1;
+  Vec3 lo = Vec3::Constant(-std::numeric_limits<double>::infinity()), hi = -lo;
+  bool given = false;
   bool holds(const Vec2& p) const {
-    return p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1;
+    return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y();
+  }
+  bool holds(const Vec3& p) const {
+    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
   }
 };
+
+namespace {
+
+// Fixity bits from the axes named, e.g. "xz" (x and y in 2D; x, y and z in 3D), or 0.
+uint8_t axis_bits(const std::string& axes, int dim) {
+  uint8_t bits = 0;
+  for (char ch : axes) {
+    const int k = ch - 'x';
+    if (k < 0 || k >= dim || (bits & node_fix_bit(k))) return 0;
+    bits |= node_fix_bit(k);
+  }
+  return bits;
+}
+
+// Holds, frees or drives the nodes in the box; returns how many.
+template <int D>
+size_t set_nodes(ContinuumT<D>& c, const NodeBox& box, bool free, uint8_t bits,
+                 const typename ContinuumT<D>::Vec* velocity) {
+  size_t count = 0;
+  for (size_t n = 0; n < c.node_count(); ++n) {
+    if (!box.holds(c.pos[n])) continue;
+    if (free)
+      c.fixity[n] = 0;
+    else
+      c.fixity[n] |= bits;
+    for (int k = 0; k < D; ++k)
+      if (bits & node_fix_bit(k)) c.fixed_vel[n][k] = velocity ? (*velocity)[k] : 0.0;
+    ++count;
+  }
+  return count;
+}
+
+// The centroid of zone z.
+template <int D>
+typename ContinuumT<D>::Vec zone_centre(const ContinuumT<D>& c, size_t z) {
+  typename ContinuumT<D>::Vec p = ContinuumT<D>::Vec::Zero();
+  for (uint32_t n : c.zones[z]) p += c.pos[n];
+  return p / (D + 1.0);
+}
+
+// Excavates the zones whose centroid is in the box; returns how many.
+template <int D>
+size_t null_zones(ContinuumT<D>& c, const NodeBox& box) {
+  size_t count = 0;
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    if (c.material[z] == 0 || !box.holds(zone_centre(c, z))) continue;
+    c.material[z] = 0, c.stress[z] = ZoneStress{}, c.state[z] = 0, ++count;
+  }
+  if (count) lump_masses(c);
+  return count;
+}
 }  // namespace
 
+NodeBox Interpreter::node_box(Args& a) {
+  NodeBox box;
+  std::string v;
+  for (int k = 0; k < model_.dim; ++k)
+    if (take(a, std::string(1, static_cast<char>('x' + k)), v)) {
+      const Vec2 r = point(v);
+      box.lo[k] = std::min(r.x(), r.y()), box.hi[k] = std::max(r.x(), r.y()), box.given = true;
+    }
+  if (model_.dim == 2 && take(a, "z", v)) fail("z= bounds boxes of 3D models; this model is 2D");
+  return box;
+}
+
 void Interpreter::cmd_zone(Args& a) {
-  if (a.words.empty()) fail("write 'zone generate edge=H [selection]' or 'zone null [selection]'");
+  if (a.words.empty()) fail("write 'zone generate edge=H [selection]' or 'zone null [box]'");
   const std::string verb = a.words[0];
   a.words.erase(a.words.begin());
-  Continuum& c = model_.continuum;
+  const bool three = model_.dim == 3;
   if (verb == "generate") {
     double edge = 0;
     if (!take_num(a, "edge", edge)) missing(a, "edge", "zone generate");
     if (!(edge > 0)) fail("the zone edge must be positive");
+    double order = 1;
+    if (take_num(a, "order", order) && order != 1)
+      fail(order == 2 ? "order=2 (10-node tetrahedra) is not available yet: use order=1"
+                      : "write order=1 (4-node zones)");
     ZoneGrading grade;
+    ZoneGrading3 grade3;
     const bool graded = take_num(a, "fine", grade.fine_edge);
     std::string v;
-    if (take(a, "near", v)) grade.centre = point(v);
+    if (take(a, "near", v)) {
+      if (three)
+        grade3.centre = point3(v);
+      else
+        grade.centre = point(v);
+    }
     take_num(a, "radius", grade.radius);
     take_num(a, "growth", grade.growth);
+    grade3.fine_edge = grade.fine_edge, grade3.radius = grade.radius, grade3.growth = grade.growth;
     if (graded && !(grade.fine_edge > 0 && grade.fine_edge <= edge))
       fail("the fine zone edge must be positive and at most edge=");
     std::vector<size_t> sel = optional_selection(a);
     done(a);
     if (sel.empty())
-      for (size_t b = 0; b < model_.blocks.size(); ++b) sel.push_back(b);
+      for (size_t b = 0; b < model_.block_count(); ++b) sel.push_back(b);
+    if (three) {
+      Continuum3& c = model_.continuum3;
+      const size_t before = c.zone_count();
+      double worst = 180;
+      for (size_t b : sel) {
+        if (model_.blocks3.deformable[b]) continue;
+        try {
+          worst = std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr));
+        } catch (const std::invalid_argument& e) {
+          fail("block " + std::to_string(model_.blocks3.id[b]) + ": " + e.what());
+        }
+      }
+      log("zone: " + std::to_string(c.zone_count() - before) + " tetrahedra, " +
+          std::to_string(c.node_count()) + " nodes in all; smallest dihedral angle " +
+          std::to_string(worst).substr(0, 5) + " degrees");
+      overlap_checked_ = false;
+      return;
+    }
+    Continuum& c = model_.continuum;
     const size_t before = c.zone_count();
     for (size_t b : sel) {
       if (model_.blocks.deformable[b]) continue;
@@ -63,29 +159,15 @@ void Interpreter::cmd_zone(Args& a) {
         std::to_string(worst).substr(0, 5) + " degrees");
     overlap_checked_ = false;
   } else if (verb == "null") {
-    // Excavation: zones whose centroid is in the selected blocks' box or the given box.
-    NodeBox box;
-    std::string v;
-    bool boxed = false;
-    if (take(a, "x", v)) {
-      const Vec2 r = point(v);
-      box.x0 = std::min(r.x(), r.y()), box.x1 = std::max(r.x(), r.y()), boxed = true;
-    }
-    if (take(a, "y", v)) {
-      const Vec2 r = point(v);
-      box.y0 = std::min(r.x(), r.y()), box.y1 = std::max(r.x(), r.y()), boxed = true;
-    }
+    // Excavation: zones whose centroid is in the box.
+    const NodeBox box = node_box(a);
     done(a);
-    if (!boxed) fail("write 'zone null x=X0,X1 y=Y0,Y1'");
-    size_t count = 0;
-    for (size_t z = 0; z < c.zone_count(); ++z) {
-      const auto& t = c.zones[z];
-      if (c.material[z] == 0 || !box.holds((c.pos[t[0]] + c.pos[t[1]] + c.pos[t[2]]) / 3.0))
-        continue;
-      c.material[z] = 0, c.stress[z] = ZoneStress{}, c.state[z] = 0, ++count;
-    }
+    if (!box.given)
+      fail(three ? "write 'zone null x=X0,X1 y=Y0,Y1 z=Z0,Z1'"
+                 : "write 'zone null x=X0,X1 y=Y0,Y1'");
+    const size_t count =
+        three ? null_zones(model_.continuum3, box) : null_zones(model_.continuum, box);
     if (!count) fail("no zone has its centre in that box");
-    lump_masses(c);
     model_.touch();
     log("zone null: " + std::to_string(count) + " zones excavated");
   } else {
@@ -94,29 +176,22 @@ void Interpreter::cmd_zone(Args& a) {
 }
 
 void Interpreter::cmd_boundary(Args& a) {
-  Continuum& c = model_.continuum;
-  if (c.node_count() == 0) fail("there are no zones: 'zone generate' makes blocks deformable");
-  NodeBox box;
-  std::string v;
-  if (take(a, "x", v)) {
-    const Vec2 r = point(v);
-    box.x0 = std::min(r.x(), r.y()), box.x1 = std::max(r.x(), r.y());
-  }
-  if (take(a, "y", v)) {
-    const Vec2 r = point(v);
-    box.y0 = std::min(r.x(), r.y()), box.y1 = std::max(r.x(), r.y());
-  }
+  const bool three = model_.dim == 3;
+  if ((three ? model_.continuum3.node_count() : model_.continuum.node_count()) == 0)
+    fail("there are no zones: 'zone generate' makes blocks deformable");
+  const NodeBox box = node_box(a);
   std::string fix, vel, stress, joints;
   const bool has_fix = take(a, "fix", fix), has_vel = take(a, "velocity", vel);
   bool has_stress = take(a, "stress", stress);
-  // A pressure P is the stress -P, -P, 0: on the wall of an opening it pushes into the rock.
+  // A pressure P is the stress -P on every axis: on the wall of an opening it pushes into the rock.
   double pressure = 0;
   if (take_num(a, "pressure", pressure)) {
     if (has_stress) fail("give stress= or pressure=, not both");
-    stress = std::to_string(-pressure) + "," + std::to_string(-pressure) + ",0";
+    const std::string p = std::to_string(-pressure);
+    stress = three ? p + "," + p + "," + p + ",0,0,0" : p + "," + p + ",0";
     has_stress = true;
   }
-  // Only the outline edges along a named joint set, crack or opening.
+  // Only the outline edges (faces) along a named joint set, crack or opening.
   int tag = -1;
   if (take(a, "joints", joints)) {
     for (size_t k = 0; k < model_.joint_tags.size(); ++k)
@@ -129,85 +204,130 @@ void Interpreter::cmd_boundary(Args& a) {
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
   if (int(has_fix) + int(has_vel) + int(has_stress) + int(free) != 1)
-    fail(
-        "write one of 'boundary fix=x|y|xy', 'boundary velocity=VX,VY', "
-        "'boundary stress=SXX,SYY,SXY' or 'boundary free', with x=X0,X1 y=Y0,Y1");
-  size_t count = 0;
+    fail(three ? "write one of 'boundary fix=x|y|z|xy|xz|yz|xyz', 'boundary velocity=VX,VY,VZ', "
+                 "'boundary stress=SXX,SYY,SZZ,SXY,SYZ,SXZ' or 'boundary free', with x=X0,X1 "
+                 "y=Y0,Y1 z=Z0,Z1"
+               : "write one of 'boundary fix=x|y|xy', 'boundary velocity=VX,VY', "
+                 "'boundary stress=SXX,SYY,SXY' or 'boundary free', with x=X0,X1 y=Y0,Y1");
   if (has_stress) {
-    // Tractions on the outline edges of deformable blocks whose both ends are in the box.
     const auto parts = split_top_level(stress);
-    if (parts.size() != 3) fail("write stress=SXX,SYY,SXY (tension positive, Pa)");
-    const ZoneStress s{num(parts[0]), num(parts[1]), num(parts[2]), 0};
-    const Blocks& B = model_.blocks;
-    for (size_t b = 0; b < B.size(); ++b) {
-      if (!B.deformable[b]) continue;
-      for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k) {
-        const uint32_t next = k + 1 < B.vert_begin[b + 1] ? k + 1 : B.vert_begin[b];
-        const auto n0 = static_cast<size_t>(B.node[k]), n1 = static_cast<size_t>(B.node[next]);
-        if (!box.holds(c.pos[n0]) || !box.holds(c.pos[n1])) continue;
-        if (tag >= 0 && B.edge_tag[k] != tag) continue;
-        const Vec2 d = c.pos[n1] - c.pos[n0];
-        const Vec2 nl(d.y(), -d.x());  // outward normal times length (outline counter-clockwise)
-        const Vec2 t(s.xx * nl.x() + s.xy * nl.y(), s.xy * nl.x() + s.yy * nl.y());
-        c.applied[n0] += 0.5 * t, c.applied[n1] += 0.5 * t, ++count;
-      }
-    }
+    if (parts.size() != (three ? 6u : 3u))
+      fail(three ? "write stress=SXX,SYY,SZZ,SXY,SYZ,SXZ (tension positive, Pa)"
+                 : "write stress=SXX,SYY,SXY (tension positive, Pa)");
+    ZoneStress s;
+    if (three)
+      s = {num(parts[0]), num(parts[1]), num(parts[3]),
+           num(parts[2]), num(parts[4]), num(parts[5])};
+    else
+      s = {num(parts[0]), num(parts[1]), num(parts[2]), 0};
+    const size_t count = three ? boundary_stress3(box, s, tag) : boundary_stress2(box, s, tag);
+    const char* what = three ? "surface triangle" : "outline edge";
     if (!count)
-      fail(tag >= 0
-               ? "no outline edge of a deformable block along '" + joints + "' lies in that box"
-               : std::string("no outline edge of a deformable block lies in that box"));
-    log("boundary stress on " + std::to_string(count) + " edges");
+      fail(tag >= 0 ? std::string("no ") + what + " of a deformable block along '" + joints +
+                          "' lies in that box"
+                    : std::string("no ") + what + " of a deformable block lies in that box");
+    log("boundary stress on " + std::to_string(count) + (three ? " surface triangles" : " edges"));
     return;
   }
   uint8_t bits = 0;
-  Vec2 velocity = Vec2::Zero();
-  if (has_fix) {
-    if (fix == "x")
-      bits = kFixX;
-    else if (fix == "y")
-      bits = kFixY;
-    else if (fix == "xy")
-      bits = kFixX | kFixY;
-    else
-      fail("write fix=x, fix=y or fix=xy");
-  }
-  if (has_vel) velocity = point(vel), bits = kFixX | kFixY;
-  for (size_t n = 0; n < c.node_count(); ++n) {
-    if (!box.holds(c.pos[n])) continue;
-    if (free)
-      c.fixity[n] = 0;
-    else
-      c.fixity[n] |= bits;
-    if (has_vel) c.fixed_vel[n] = velocity;
-    if (has_fix) {
-      if (bits & kFixX) c.fixed_vel[n].x() = 0;
-      if (bits & kFixY) c.fixed_vel[n].y() = 0;
-    }
-    ++count;
+  if (has_fix && !(bits = axis_bits(fix, model_.dim)))
+    fail(three ? "write fix= with the axes held: x, y, z, xy, xz, yz or xyz"
+               : "write fix=x, fix=y or fix=xy");
+  size_t count = 0;
+  if (three) {
+    const Vec3 v = has_vel ? point3(vel) : Vec3::Zero();
+    if (has_vel) bits = 7;
+    count = set_nodes(model_.continuum3, box, free, bits, has_vel ? &v : nullptr);
+  } else {
+    const Vec2 v = has_vel ? point(vel) : Vec2::Zero();
+    if (has_vel) bits = kFixX | kFixY;
+    count = set_nodes(model_.continuum, box, free, bits, has_vel ? &v : nullptr);
   }
   if (!count) fail("no node lies in that box");
   log("boundary: " + std::to_string(count) + " nodes");
 }
 
-void Interpreter::cmd_insitu(Args& a) {
+size_t Interpreter::boundary_stress2(const NodeBox& box, const ZoneStress& s, int tag) {
+  // Tractions on the outline edges of deformable blocks whose both ends are in the box.
   Continuum& c = model_.continuum;
+  const Blocks& B = model_.blocks;
+  size_t count = 0;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.deformable[b]) continue;
+    for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k) {
+      const uint32_t next = k + 1 < B.vert_begin[b + 1] ? k + 1 : B.vert_begin[b];
+      const auto n0 = static_cast<size_t>(B.node[k]), n1 = static_cast<size_t>(B.node[next]);
+      if (!box.holds(c.pos[n0]) || !box.holds(c.pos[n1])) continue;
+      if (tag >= 0 && B.edge_tag[k] != tag) continue;
+      const Vec2 d = c.pos[n1] - c.pos[n0];
+      const Vec2 nl(d.y(), -d.x());  // outward normal times length (outline counter-clockwise)
+      const Vec2 t(s.xx * nl.x() + s.xy * nl.y(), s.xy * nl.x() + s.yy * nl.y());
+      c.applied[n0] += 0.5 * t, c.applied[n1] += 0.5 * t, ++count;
+    }
+  }
+  return count;
+}
+
+size_t Interpreter::boundary_stress3(const NodeBox& box, const ZoneStress& s, int tag) {
+  // Tractions on the surface triangles of deformable blocks whose three corners are in the box.
+  Continuum3& c = model_.continuum3;
+  const Blocks3& B = model_.blocks3;
+  size_t count = 0;
+  for (size_t f = 0; f + 1 < B.ftri_begin.size(); ++f) {
+    if (tag >= 0 && B.face_tag[f] != tag) continue;
+    for (uint32_t k = B.ftri_begin[f]; k < B.ftri_begin[f + 1]; ++k) {
+      const auto& t = B.ftri[k];
+      if (!box.holds(c.pos[t[0]]) || !box.holds(c.pos[t[1]]) || !box.holds(c.pos[t[2]])) continue;
+      // Outward normal times area, then the traction sigma . n, a third to each corner.
+      const Vec3 n = 0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]);
+      const Vec3 tr(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
+                    s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
+                    s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
+      for (uint32_t node : t) c.applied[node] += tr / 3.0;
+      ++count;
+    }
+  }
+  return count;
+}
+
+void Interpreter::cmd_insitu(Args& a) {
+  const bool three = model_.dim == 3;
   std::string v;
   if (!take(a, "stress", v)) missing(a, "stress", "insitu");
   auto parts = split_top_level(v);
-  if (parts.size() != 3) fail("write stress=SXX,SYY,SXY (tension positive, Pa)");
-  ZoneStress s0{num(parts[0]), num(parts[1]), num(parts[2]), 0}, g;
-  bool has_zz = false;
-  if (take(a, "szz", v)) s0.zz = num(v), has_zz = true;
-  double y0 = 0;
-  if (take(a, "ygradient", v)) {
+  // 2D: SXX,SYY,SXY (and szz=); 3D: SXX,SYY,SZZ,SXY,SYZ,SXZ.
+  const auto tensor = [&](const std::vector<std::string>& p) {
+    return three ? ZoneStress{num(p[0]), num(p[1]), num(p[3]), num(p[2]), num(p[4]), num(p[5])}
+                 : ZoneStress{num(p[0]), num(p[1]), num(p[2]), 0};
+  };
+  const size_t want = three ? 6 : 3;
+  if (parts.size() != want)
+    fail(three ? "write stress=SXX,SYY,SZZ,SXY,SYZ,SXZ (tension positive, Pa)"
+               : "write stress=SXX,SYY,SXY (tension positive, Pa)");
+  ZoneStress s0 = tensor(parts), g;
+  bool has_zz = three;
+  if (!three && take(a, "szz", v)) s0.zz = num(v), has_zz = true;
+  const char* gradient = three ? "zgradient" : "ygradient";
+  double v0 = 0;
+  if (take(a, gradient, v)) {
     parts = split_top_level(v);
-    if (parts.size() != 3) fail("write ygradient=GXX,GYY,GXY (Pa per metre of height)");
-    g = {num(parts[0]), num(parts[1]), num(parts[2]), 0};
+    if (parts.size() != want)
+      fail(three ? "write zgradient=GXX,GYY,GZZ,GXY,GYZ,GXZ (Pa per metre of height)"
+                 : "write ygradient=GXX,GYY,GXY (Pa per metre of height)");
+    g = tensor(parts);
   }
-  take_num(a, "y0", y0);
+  take_num(a, three ? "z0" : "y0", v0);
   done(a);
-  if (model_.blocks.size() == 0) fail("there are no blocks to take the stress");
-  initialize_stress(c, s0, g, y0);
+  if (model_.block_count() == 0) fail("there are no blocks to take the stress");
+  if (three) {
+    Continuum3& c = model_.continuum3;
+    if (c.zone_count() == 0) fail("nothing takes the stress: there are no zones ('zone generate')");
+    initialize_stress(c, s0, g, v0);
+    log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones");
+    return;
+  }
+  Continuum& c = model_.continuum;
+  initialize_stress(c, s0, g, v0);
   // The out-of-plane stress of plane strain, unless given: nu (sxx + syy) per zone.
   if (!has_zz)
     for (size_t z = 0; z < c.zone_count(); ++z) {
@@ -217,7 +337,7 @@ void Interpreter::cmd_insitu(Args& a) {
       c.stress[z].zz = nu * (c.stress[z].xx + c.stress[z].yy);
     }
   // The joints: tractions of the same field on every shut contact.
-  const size_t loaded = preload_contacts(model_, StressField{s0, g, y0});
+  const size_t loaded = preload_contacts(model_, StressField{s0, g, v0});
   if (c.zone_count() == 0 && loaded == 0)
     fail("nothing takes the stress: there are no zones and no shut joints");
   log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones and on " +

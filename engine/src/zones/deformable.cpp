@@ -9,17 +9,20 @@
 
 #include "tessera/core/geometry.hpp"
 #include "tessera/core/timestep.hpp"
+#include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
 
 void sync_zone_materials(Model& m) {
-  Continuum& c = m.continuum;
-  c.materials.resize(m.materials.size() + 1);
-  c.materials[0].name = "null";
-  c.materials[0].model = "null";
-  c.materials[0].finalize();
-  for (size_t k = 0; k < m.materials.size(); ++k)
-    if (!m.materials[k].zone.model.empty()) c.materials[k + 1] = m.materials[k].zone;
+  for (std::vector<ZoneProperties>* zm : {&m.continuum.materials, &m.continuum3.materials}) {
+    std::vector<ZoneProperties>& c = *zm;
+    c.resize(m.materials.size() + 1);
+    c[0].name = "null";
+    c[0].model = "null";
+    c[0].finalize();
+    for (size_t k = 0; k < m.materials.size(); ++k)
+      if (!m.materials[k].zone.model.empty()) c[k + 1] = m.materials[k].zone;
+  }
 }
 
 namespace {
@@ -295,18 +298,26 @@ double pick_step(const Model& m, std::vector<double> steps) {
 }  // namespace
 
 double deformable_timestep(const Model& m) {
+  if (m.dim == 3) return m.continuum3.zone_count() ? pick_step(m, node_timesteps3(m)) : 1e300;
   if (m.continuum.zone_count() == 0) return 1e300;
   return pick_step(m, node_timesteps(m));
 }
 
-void scale_node_inertia(Model& m) {
-  Continuum& c = m.continuum;
-  c.inertia = c.mass;
-  if (!m.settings.dt_scaled || c.zone_count() == 0) return;
-  const std::vector<double> steps = node_timesteps(m);
+namespace {
+template <int D>
+void scale_inertia(const Model& m, ContinuumT<D>& c, const std::vector<double>& steps) {
   const double target = pick_step(m, steps);
   for (size_t n = 0; n < c.node_count(); ++n)
     if (steps[n] < target) c.inertia[n] = c.mass[n] * (target / steps[n]) * (target / steps[n]);
+}
+}  // namespace
+
+void scale_node_inertia(Model& m) {
+  m.continuum.inertia = m.continuum.mass;
+  m.continuum3.inertia = m.continuum3.mass;
+  if (!m.settings.dt_scaled) return;
+  if (m.dim == 3 && m.continuum3.zone_count()) scale_inertia(m, m.continuum3, node_timesteps3(m));
+  if (m.dim == 2 && m.continuum.zone_count()) scale_inertia(m, m.continuum, node_timesteps(m));
 }
 
 }  // namespace tessera

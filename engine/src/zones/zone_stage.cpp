@@ -1,4 +1,4 @@
-// The zones' stage of the cycle.
+// The zones' stage of the cycle, the same in 2D and 3D.
 #include "tessera/zones/zone_stage.hpp"
 
 #include <algorithm>
@@ -6,31 +6,50 @@
 
 #include "tessera/core/step.hpp"
 #include "tessera/zones/deformable.hpp"
+#include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
 
-ZoneMotion zone_stage(Model& m, const Damping& d) {
-  Continuum& zc = m.continuum;
+namespace {
+template <int D>
+ZoneMotion step_zones(Model& m, ContinuumT<D>& zc, const typename ContinuumT<D>::Vec& gravity,
+                      std::vector<typename ContinuumT<D>::Vec>& det_node, const Damping& d) {
   ZoneMotion out;
   if (zc.zone_count() == 0) return out;
   out.active = true;
-  zc.gravity = m.settings.gravity;
+  zc.gravity = gravity;
   zc.local_damping = d.alpha;
   zc.dt = m.dt;
   zone_forces(zc);
-  add_contact_forces_to_nodes(m);
+  // Contact forces reach the nodes (node velocities in, node forces out), then the nodes move
+  // and the blocks' outlines (2D) or corners and faces (3D) follow them.
+  if constexpr (D == 2) {
+    add_contact_forces_to_nodes(m);
+  } else {
+    add_contact_forces_to_nodes3(m);
+  }
   const double node_move = move_nodes(zc);
-  update_deformable_world(m);
+  if constexpr (D == 2) {
+    update_deformable_world(m);
+  } else {
+    update_deformable_world3(m);
+  }
   // A node that moves half the contact tolerance in one step has left explicit dynamics.
   if (!std::isfinite(node_move) || node_move > 0.5 * m.tolerance())
     throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
                      ": a node of a deformable block moved " + std::to_string(node_move) +
                      " m in one step (time step too large, or blocks overlapping badly)");
-  if (m.det_node.size() != zc.node_count()) m.det_node = zc.pos0;
+  if (det_node.size() != zc.node_count()) det_node = zc.pos0;
   for (size_t k = 0; k < zc.node_count(); ++k)
-    out.drift = std::max(out.drift, (zc.pos[k] - m.det_node[k]).norm());
+    out.drift = std::max(out.drift, (zc.pos[k] - det_node[k]).norm());
   out.ratio = zc.ratio;
   return out;
+}
+}  // namespace
+
+ZoneMotion zone_stage(Model& m, const Damping& d) {
+  if (m.dim == 3) return step_zones(m, m.continuum3, m.settings.gravity3, m.det_node3, d);
+  return step_zones(m, m.continuum, m.settings.gravity, m.det_node, d);
 }
 
 }  // namespace tessera

@@ -13,6 +13,7 @@
 // its forces go to its master, and contacts between pieces of one body are never made.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -55,6 +56,16 @@ struct Blocks3 {
   std::vector<Vec3> local_dir, world_dir;
   // The block whose body moves this one (itself unless it is a slave piece of a concave block).
   std::vector<int32_t> master;
+  // Deformable blocks (§5.3.1): the block moves with its zones' nodes, not as a body. Each vertex
+  // is a node (-1 for rigid blocks), and face f of the block is covered by the surface triangles
+  // ftri[ftri_begin[f] .. ftri_begin[f+1]) (node triples, counter-clockwise outside); the world
+  // vertices and face planes are refreshed from the nodes (zones/deformable3.cpp). The block's
+  // nodes and zones are [node_begin[b], node_end[b]) and [zone_begin[b], zone_end[b]).
+  std::vector<uint8_t> deformable;
+  std::vector<int32_t> vertex_node;
+  std::vector<uint32_t> ftri_begin{0};
+  std::vector<std::array<uint32_t, 3>> ftri;
+  std::vector<uint32_t> node_begin, node_end, zone_begin, zone_end;
   // Cold data.
   std::vector<int> group, material, id;
 
@@ -75,6 +86,8 @@ struct Blocks3 {
   // the mass-weighted velocity and no spin. Joined bodies may be joined again.
   void join(const std::vector<size_t>& pieces, const std::vector<double>& densities);
   bool is_slave(size_t b) const { return master[b] != static_cast<int32_t>(b); }
+  // Held still or at a prescribed velocity as a whole (a deformable block moves with its nodes).
+  bool held(size_t b) const { return fixity[b] == kFix3All && !deformable[b]; }
   // Whether a world point lies inside block b (on the surface counts).
   bool contains(size_t b, const Vec3& p) const;
 };

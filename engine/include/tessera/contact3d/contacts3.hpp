@@ -28,10 +28,19 @@
 // rides on block a and its gap is measured afresh between the two faces' current planes, and the
 // plane's normal is the candidate face's current normal.
 //
+// Deformable blocks (§5.3.2). A face of a deformable block touches as its surface nodes: each
+// surface triangle of the facing face is clipped by the other face on the plane, and the clipped
+// area goes to the triangle's three nodes in the barycentric weights of its centroid, so the
+// nodes' areas add up to the contact area and their first moment is the overlap's. Each node
+// with area is a sub-contact whose gap is measured from the node to the other face (to the
+// surface triangle it meets on a deformable one) along the normal. Where both blocks are
+// deformable both sets act with half the area each: the same total stiffness and force.
+//
 // The shear force is a vector in the CP, kept in world coordinates and turned with the plane each
 // cycle (its magnitude kept); the joint law sees it in the plane's two tangent directions.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -55,6 +64,13 @@ struct SubContact {
   Vec3 fs = Vec3::Zero();
   uint8_t flags = 0;
   Vec3 force = Vec3::Zero();  // on a this cycle
+  // A surface node of a deformable block against the other block's face (§5.3.2): the node
+  // (-1 for a corner of two rigid faces' overlap), its side (0: a, 1: b), and on a deformable
+  // opposite face the surface triangle met, with the weights that share its motion and force.
+  int32_t node = -1;
+  uint8_t node_side = 0;
+  std::array<int32_t, 3> tri{-1, -1, -1};
+  Vec3 weight = Vec3::Zero();
 };
 
 struct Contact3 {

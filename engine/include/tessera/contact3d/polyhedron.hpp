@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct SolidProperties {
 // fault if the surface is not closed, a face has fewer than three vertices or the volume is
 // not positive (faces turned inside out).
 SolidProperties solid_properties(const Polyhedron& p);
+
+// Unit normal of a planar (or nearly planar) polygon of the vertices v[face[k]], by Newell's
+// method: robust for nearly collinear vertices, and the best-fit normal of a warped face.
+Vec3 newell_normal(const std::vector<Vec3>& v, std::span<const uint32_t> face);
 
 // A box from its two opposite corners, and a right prism: a counter-clockwise base polygon in
 // the plane z = z0 extruded to z1.

@@ -70,6 +70,8 @@ struct Model {
   // Nodes and zones of the deformable blocks. Zone material k + 1 is model material k; zone
   // material 0 is null (excavated).
   Continuum continuum;
+  // The same for deformable 3D blocks (tetrahedra); the blocks' surfaces are in Blocks3.
+  Continuum3 continuum3;
 
   // Clock.
   uint64_t cycle = 0;
@@ -82,6 +84,7 @@ struct Model {
   // Block positions at the last detection pass (Verlet list), and whether one is due.
   std::vector<double> det_x, det_y, det_theta;
   std::vector<Vec2> det_node;
+  std::vector<Vec3> det_node3;
   std::vector<Vec3> det_pos3;
   std::vector<Eigen::Quaterniond> det_q3;
   bool detection_due = true;

@@ -72,6 +72,8 @@ struct SavePoint {
 };
 
 // One command line split into words; key=value words become keys.
+struct NodeBox;
+
 struct Args {
   std::string command;
   std::vector<std::string> words;
@@ -179,6 +181,12 @@ class Interpreter {
   void cmd_join3(Args&);
   void cmd_only2d(Args&);
   Vec3 point3(const std::string& text) const;
+  // A box of nodes and zones: x=X0,X1 y=Y0,Y1 (and z=Z0,Z1 in 3D), each optional.
+  NodeBox node_box(Args& a);
+  // Boundary stress on the deformable blocks' outline edges (2D) or surface triangles (3D) in the
+  // box (along joints of `tag` if not -1); returns how many took it.
+  size_t boundary_stress2(const NodeBox& box, const ZoneStress& s, int tag);
+  size_t boundary_stress3(const NodeBox& box, const ZoneStress& s, int tag);
   // Fixity bits named by the words of 'fix' and 'free' (all when none is named).
   uint8_t fixity_words(const std::vector<std::string>& words) const;
   // The keywords both walls share (courses=, bricks=, group=, material=, name=, made into the

@@ -1,0 +1,30 @@
+// Deformable 3D blocks (§5.3.1): zoning a polyhedral block into tetrahedra, its corners and face
+// planes following its nodes, contact forces reaching its surface nodes, and its time step.
+// The 3D counterpart of deformable.hpp, on the same Continuum kernel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tessera/core/model.hpp"
+
+namespace tessera {
+
+// Zones 3D block b (zone edges up to `max_edge`, optionally graded) and makes it deformable:
+// its corners become nodes and each face is covered by the surface triangles of its zones.
+// Returns the smallest dihedral angle of its zones (degrees). Throws std::invalid_argument if
+// its material has no elastic constants, it is deformable already or a piece of a joined body.
+double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading = nullptr);
+// Refreshes the corners and face planes of every deformable 3D block from its nodes.
+void update_deformable_world3(Model& m);
+// Adds the sub-contact forces on deformable 3D blocks to their nodes, in a fixed order per block.
+void add_contact_forces_to_nodes3(Model& m);
+// Each node's own stable step (1e300 for a massless node): the smallest of its zones', and for
+// a surface node its mass against the stiffest joint pair over its share of the surface.
+std::vector<double> node_timesteps3(const Model& m);
+// Drops the nodes and zones of the doomed blocks (before Blocks3::remove with the same flags).
+void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed);
+// The block (index) whose zones hold node n, or -1.
+int node_block3(const Model& m, size_t n);
+
+}  // namespace tessera

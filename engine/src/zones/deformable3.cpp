@@ -1,0 +1,213 @@
+// Deformable 3D blocks: zoning, corners and faces from nodes, contact forces on nodes, removal.
+#include "tessera/zones/deformable3.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "tessera/core/timestep.hpp"
+#include "tessera/zones/deformable.hpp"
+
+namespace tessera {
+
+double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading) {
+  Blocks3& B = m.blocks3;
+  if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  if (B.master[b] != static_cast<int32_t>(b) ||
+      std::count(B.master.begin(), B.master.end(), static_cast<int32_t>(b)) > 1)
+    throw std::invalid_argument(
+        "it is a piece of a joined (concave) body, which cannot be zoned yet: zone convex blocks");
+  const int mat = B.material[b];
+  if (mat < 0 || m.materials[static_cast<size_t>(mat)].zone.model.empty())
+    throw std::invalid_argument(
+        "its material has no elastic constants (give E and nu, or K and G, on 'material "
+        "define')");
+  sync_zone_materials(m);
+  const Polyhedron poly = B.polyhedron(b);
+  const ZoneMesh3 mesh = zone_polyhedron(poly, max_edge, 2000000, grading);
+  Continuum3& c = m.continuum3;
+  const uint32_t first = add_mesh(c, mesh, static_cast<uint32_t>(mat + 1));
+  B.node_begin[b] = first, B.node_end[b] = static_cast<uint32_t>(c.node_count());
+  B.zone_end[b] = static_cast<uint32_t>(c.zone_count());
+  B.zone_begin[b] = B.zone_end[b] - static_cast<uint32_t>(mesh.tets.size());
+  // Each corner is a node of the mesh (the mesher protects the block's edges).
+  const double eps = 1e-9 * B.bound_radius[b];
+  for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
+    size_t best = 0;
+    double d = 1e300;
+    for (size_t n = 0; n < mesh.nodes.size(); ++n)
+      if (const double e = (mesh.nodes[n] - B.world_vertex[v]).norm(); e < d) d = e, best = n;
+    if (d > 1e3 * eps) throw std::invalid_argument("the mesher moved a corner of the block");
+    B.vertex_node[v] = static_cast<int32_t>(first + best);
+  }
+  // Each surface triangle on the face whose plane it lies in and whose normal it shares.
+  const uint32_t f0 = B.face_begin[b], f1 = B.face_begin[b + 1];
+  std::vector<std::vector<std::array<uint32_t, 3>>> on_face(f1 - f0);
+  for (const auto& t : boundary_faces(mesh)) {
+    const Vec3 n = (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+    uint32_t face = f1;
+    for (uint32_t f = f0; f < f1 && face == f1; ++f) {
+      const Vec3& fn = B.world_normal[f];
+      bool in = fn.dot(n) > 0.99 * n.norm();
+      for (uint32_t k : t)
+        in = in && std::abs(fn.dot(mesh.nodes[k]) - B.world_offset[f]) < 1e3 * eps;
+      if (in) face = f;
+    }
+    if (face == f1) throw std::invalid_argument("a surface triangle of its zones lies on no face");
+    on_face[face - f0].push_back({first + t[0], first + t[1], first + t[2]});
+  }
+  // Splice them into the face-ordered list of every block's surface triangles.
+  std::vector<std::array<uint32_t, 3>> tris(B.ftri.begin(), B.ftri.begin() + B.ftri_begin[f0]);
+  std::vector<uint32_t> begin(B.ftri_begin.begin(), B.ftri_begin.begin() + f0 + 1);
+  for (uint32_t f = f0; f < f1; ++f) {
+    tris.insert(tris.end(), on_face[f - f0].begin(), on_face[f - f0].end());
+    begin.push_back(static_cast<uint32_t>(tris.size()));
+  }
+  const uint32_t shift = static_cast<uint32_t>(tris.size()) - B.ftri_begin[f1];
+  tris.insert(tris.end(), B.ftri.begin() + B.ftri_begin[f1], B.ftri.end());
+  for (size_t f = f1 + 1; f < B.ftri_begin.size(); ++f) begin.push_back(B.ftri_begin[f] + shift);
+  B.ftri = std::move(tris), B.ftri_begin = std::move(begin);
+  // The body's motion is replaced by the nodes'.
+  B.deformable[b] = 1;
+  B.fixity[b] = kFix3All;
+  B.body[b].velocity = B.body[b].momentum = Vec3::Zero();
+  B.fixed_v[b] = B.fixed_w[b] = B.omega[b] = Vec3::Zero();
+  lump_masses(c);
+  m.contacts3.clear();
+  m.block_contact_begin.clear();
+  m.touch();
+  return mesh.min_dihedral;
+}
+
+void update_deformable_world3(Model& m) {
+  Blocks3& B = m.blocks3;
+  const std::vector<Vec3>& pos = m.continuum3.pos;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.deformable[b]) continue;
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+      B.world_vertex[v] = pos[static_cast<size_t>(B.vertex_node[v])];
+    // A face's plane: the best-fit normal of its corners, through their mean.
+    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
+      const std::span<const uint32_t> face(B.face_vert.data() + B.fv_begin[f],
+                                           B.fv_begin[f + 1] - B.fv_begin[f]);
+      const Vec3 n = newell_normal(B.world_vertex, face);
+      double off = 0.0;
+      for (uint32_t v : face) off += n.dot(B.world_vertex[v]);
+      B.world_normal[f] = n, B.world_offset[f] = off / static_cast<double>(face.size());
+    }
+  }
+}
+
+void add_contact_forces_to_nodes3(Model& m) {
+  const Blocks3& B = m.blocks3;
+  Continuum3& c = m.continuum3;
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.deformable[b]) continue;
+    for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
+      const Contact3& ct = m.contacts3[m.block_contacts[k] >> 1];
+      const uint8_t side = m.block_contacts[k] & 1;
+      const double sign = side ? -1.0 : 1.0;  // a sub-contact's force is on a
+      for (const SubContact& s : ct.subs) {
+        if (s.node < 0) continue;
+        if (s.node_side == side) {
+          add_node_force(c, static_cast<size_t>(s.node), Vec3(sign * s.force));
+        } else {
+          for (int i = 0; i < 3; ++i)
+            if (s.tri[i] >= 0)
+              add_node_force(c, static_cast<size_t>(s.tri[i]), Vec3(sign * s.weight[i] * s.force));
+        }
+      }
+    }
+  }
+}
+
+std::vector<double> node_timesteps3(const Model& m) {
+  const Continuum3& c = m.continuum3;
+  std::vector<double> dt(c.node_count(), 1e300);
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    const double s = zone_timestep(c, z);
+    for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
+  }
+  // Surface nodes: a third of each surface triangle around them (as 2D's half of each edge).
+  const double kmax = stiffest_joint_pair(m);
+  if (kmax <= 0) return dt;
+  std::vector<double> share(c.node_count(), 0.0);
+  for (const auto& t : m.blocks3.ftri) {
+    const double area =
+        0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]).norm() / 3.0;
+    for (uint32_t n : t) share[n] += area;
+  }
+  for (size_t n = 0; n < c.node_count(); ++n)
+    if (share[n] > 0 && c.mass[n] > 0)
+      dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (kmax * share[n])));
+  return dt;
+}
+
+int node_block3(const Model& m, size_t n) {
+  const Blocks3& B = m.blocks3;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (B.deformable[b] && n >= B.node_begin[b] && n < B.node_end[b]) return static_cast<int>(b);
+  return -1;
+}
+
+void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
+  Blocks3& B = m.blocks3;
+  Continuum3& c = m.continuum3;
+  std::vector<int64_t> node_map(c.node_count()), zone_map(c.zone_count());
+  for (size_t n = 0; n < node_map.size(); ++n) node_map[n] = static_cast<int64_t>(n);
+  for (size_t z = 0; z < zone_map.size(); ++z) zone_map[z] = static_cast<int64_t>(z);
+  bool any = false;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (doomed[b] && B.deformable[b]) {
+      any = true;
+      for (uint32_t n = B.node_begin[b]; n < B.node_end[b]; ++n) node_map[n] = -1;
+      for (uint32_t z = B.zone_begin[b]; z < B.zone_end[b]; ++z) zone_map[z] = -1;
+    }
+  if (!any) return;
+  int64_t next = 0;
+  for (auto& k : node_map)
+    if (k >= 0) k = next++;
+  next = 0;
+  for (auto& k : zone_map)
+    if (k >= 0) k = next++;
+  // Keep the rest in order (the kernel's arrays, then every reference to a node or zone).
+  const auto keep = [](auto& v, const std::vector<int64_t>& map) {
+    size_t j = 0;
+    for (size_t i = 0; i < map.size(); ++i)
+      if (map[i] >= 0) v[j++] = v[i];
+    v.resize(j);
+  };
+  for (auto* v : {&c.pos, &c.pos0, &c.vel, &c.force, &c.applied, &c.fixed_vel}) keep(*v, node_map);
+  keep(c.mass, node_map), keep(c.inertia, node_map), keep(c.fixity, node_map);
+  keep(c.zones, zone_map), keep(c.stress, zone_map), keep(c.state, zone_map);
+  keep(c.material, zone_map);
+  for (auto& t : c.zones)
+    for (uint32_t& n : t) n = static_cast<uint32_t>(node_map[n]);
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.deformable[b] || doomed[b]) continue;
+    const auto first_kept = [](const std::vector<int64_t>& map, uint32_t lo) {
+      int64_t before = 0;
+      for (uint32_t i = 0; i < lo; ++i) before += map[i] >= 0;
+      return static_cast<uint32_t>(before);
+    };
+    const uint32_t nb = first_kept(node_map, B.node_begin[b]);
+    const uint32_t zb = first_kept(zone_map, B.zone_begin[b]);
+    B.node_end[b] = nb + (B.node_end[b] - B.node_begin[b]), B.node_begin[b] = nb;
+    B.zone_end[b] = zb + (B.zone_end[b] - B.zone_begin[b]), B.zone_begin[b] = zb;
+    for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v)
+      B.vertex_node[v] = static_cast<int32_t>(node_map[static_cast<size_t>(B.vertex_node[v])]);
+  }
+  // Surface triangles of kept blocks are renumbered; those of doomed ones go with their faces.
+  for (auto& t : B.ftri)
+    for (uint32_t& n : t)
+      if (node_map[n] >= 0) n = static_cast<uint32_t>(node_map[n]);
+  for (auto& s : m.histories.series)
+    if (s.node >= 0 && static_cast<size_t>(s.node) < node_map.size()) {
+      const int64_t n = node_map[static_cast<size_t>(s.node)];
+      s.node = n >= 0 ? static_cast<int32_t>(n) : -1;
+      if (n < 0) s.block = -2;
+    }
+  m.det_node3.clear();
+}
+
+}  // namespace tessera

@@ -1,0 +1,196 @@
+// Deformable 3D blocks in models built by script: tetrahedral zones touching rigid and
+// deformable blocks through node-to-face sub-contacts, against closed-form answers.
+#include <QtTest>
+#include <cmath>
+
+#include "support.hpp"
+#include "tessera/core/parallel.hpp"
+#include "tessera/io/state_io.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+using tessera::test::state_hash;
+
+namespace {
+double last(const Model& m, const std::string& label) {
+  const Histories& h = m.histories;
+  return h.at(h.rows() - 1, static_cast<size_t>(h.find(label)));
+}
+
+// A rigid slab held fixed (block 1) and `blocks` zoned rock blocks 1 x 1 x h m stacked on it.
+std::string stack(int blocks, double h, double kn, const std::string& sides) {
+  std::string s =
+      "dimension 3\ntolerance 0.01\nmaterial define stone density=2500\n"
+      "material define rock density=2000 E=1e9 nu=0.25\n"
+      "joint define j kn=" +
+      std::to_string(kn) + " ks=" + std::to_string(kn) +
+      " friction=30\njoint assign j\n"
+      "block box -1,-1,-1 2,2,0 group=base material=stone\nfix group=base\n";
+  for (int k = 0; k < blocks; ++k)
+    s += "block box 0,0," + std::to_string(k * h) + " 1,1," + std::to_string((k + 1) * h) +
+         " group=rock material=rock\n";
+  return s + "zone generate edge=0.3 group=rock\n" + sides + "gravity 0 0 -10\n";
+}
+
+// Rollers on the four sides of the stack (x and y held on the faces x, y = 0 and 1).
+const char* kRollers =
+    "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
+    "boundary fix=y y=-0.001,0.001\nboundary fix=y y=0.999,1.001\n";
+
+// Normal force of every sub-contact of the 3D contacts, summed.
+double total_normal_force(const Model& m) {
+  double sum = 0;
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& s : c.subs) sum += s.fn;
+  return sum;
+}
+}  // namespace
+
+class TestDeformable3 : public QObject {
+  Q_OBJECT
+ private slots:
+  // A 4 m zoned column between rollers on a rigid base: the top settles rho g H^2 / (2M) in
+  // the column plus the joint's closure rho g H / kn, within 1%; the base's sub-contacts carry
+  // the column's weight within 0.1%.
+  void columnOnARigidBase() {
+    ScriptRun r;
+    r.run(stack(1, 4, 1e10, kRollers) +
+          "history zdisp at=0.5,0.5,3.999 label=top\n"
+          "history zdisp at=0.5,0.5,0.001 label=bottom\nsolve ratio=1e-7 cycles=200000");
+    const double k = 1e9 / (3 * (1 - 0.5)), g = 1e9 / 2.5, m = k + 4 * g / 3;
+    const double column = 2000 * 10 * 16 / (2 * m), joint = 2000 * 10 * 4 / 1e10;
+    const double top = -last(r.model(), "top"), bottom = -last(r.model(), "bottom");
+    qInfo("top settlement %.5e m (closed form %.5e), joint closure %.4e m (%.4e)", top,
+          column + joint, bottom, joint);
+    QVERIFY(std::abs(top / (column + joint) - 1) < 0.01);
+    QVERIFY(std::abs(bottom / joint - 1) < 0.02);
+    // Rollers carry no vertical load: the base takes all the weight.
+    const double weight = 2000 * 10 * 4;
+    qInfo("base reaction %.6e N (weight %.6e)", total_normal_force(r.model()), weight);
+    QVERIFY(std::abs(total_normal_force(r.model()) / weight - 1) < 1e-3);
+  }
+
+  // Two zoned cubes on the base: the joint between two deformable faces (both node sets, each
+  // with half the area) is as stiff as the one against the rigid base, so each joint closes by
+  // the weight above it over kn (soft joints, where the joints dominate), within 2%.
+  void deformableOnDeformable() {
+    ScriptRun r;
+    r.run(stack(2, 1, 1e8, kRollers) +
+          "history zdisp at=0.5,0.5,0.999 label=lower_top\n"
+          "history zdisp at=0.5,0.5,1.001 label=upper_bottom\n"
+          "history zdisp at=0.5,0.5,0.001 label=lower_bottom\nsolve ratio=1e-7 cycles=200000");
+    const double k = 1e9 / (3 * (1 - 0.5)), g = 1e9 / 2.5, m = k + 4 * g / 3;
+    // Closure of the upper joint: the upper cube's weight over kn.
+    const double upper = -(last(r.model(), "upper_bottom") - last(r.model(), "lower_top"));
+    const double lower = -last(r.model(), "lower_bottom");
+    qInfo("upper joint closes %.5e m (%.5e), lower %.5e m (%.5e)", upper, 2000 * 10 / 1e8, lower,
+          2 * 2000 * 10 / 1e8);
+    QVERIFY(std::abs(upper / (2000 * 10 / 1e8) - 1) < 0.02);
+    QVERIFY(std::abs(lower / (2 * 2000 * 10 / 1e8) - 1) < 0.02);
+    // The column between: the lower cube shortens by the weight above plus half its own.
+    const double shortening = last(r.model(), "lower_top") - last(r.model(), "lower_bottom");
+    QVERIFY(std::abs(-shortening / (2000 * 10 * 1.5 / m) - 1) < 0.02);
+  }
+
+  // A zoned cube sliding down a 30 degree slope (gravity tilted) on a joint of 20 degrees'
+  // friction, undamped: the mean acceleration of its corners is g (sin 30 - cos 30 tan 20)
+  // within 1% (fitted over the second half of the run, after the first contact's rebound).
+  void slidesAtTheCoulombAcceleration() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2500 E=1e9 nu=0.25\n"
+        "joint define j kn=1e10 ks=1e10 friction=20\njoint assign j\n"
+        "block box -1,-1,-1 6,2,0 material=rock group=base\nfix group=base\n"
+        "block box 0,0,0 1,1,1 material=rock group=top\nzone generate edge=0.34 group=top\n"
+        "damping none\ngravity (10*sin(30)) 0 (-10*cos(30))\n"
+        "history xvel block=2 label=v\nhistory interval 10\nstep 4000");
+    const Histories& h = r.model().histories;
+    std::vector<double> t, v;
+    for (size_t i = h.rows() / 2; i < h.rows(); ++i)
+      t.push_back(static_cast<double>(h.cycles[i]) * r.model().dt), v.push_back(h.at(i, 0));
+    const double a = tessera::test::fitted_slope(t, v);
+    const double coulomb = 10 * (std::sin(M_PI / 6) - std::cos(M_PI / 6) * std::tan(M_PI / 9));
+    qInfo("acceleration %.5f m/s2 (Coulomb %.5f)", a, coulomb);
+    QVERIFY(std::abs(a / coulomb - 1) < 0.01);
+  }
+
+  // Boundary stress on a zoned cube's top face and rollers elsewhere: uniaxial strain, the top
+  // moving sigma H / M.
+  void boundaryStressOnSurfaceTriangles() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+        "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.3\n" +
+        std::string(kRollers) +
+        "boundary fix=z z=-0.001,0.001\nboundary stress=0,0,-1e6,0,0,0 z=0.999,1.001\n"
+        "history zdisp at=0.5,0.5,1 label=top\nsolve ratio=1e-7 cycles=100000");
+    const double m = 1e9 * 0.75 / (1.25 * 0.5);
+    qInfo("top %.6e m (%.6e)", last(r.model(), "top"), -1e6 / m);
+    QVERIFY(std::abs(last(r.model(), "top") / (-1e6 / m) - 1) < 0.005);
+  }
+
+  // Saved mid-run and restored, a 3D deformable model continues bit for bit; one thread or
+  // two give the same bits.
+  void restoresAndRepeatsBitForBit() {
+    uint64_t hash[2] = {};
+    for (int t = 1; t <= 2; ++t) {
+      set_thread_count(t);
+      ScriptRun r;
+      r.run(stack(2, 1, 1e9, kRollers) + "step 300");
+      const std::string path = r.path("mid.state");
+      save_state(r.model(), path);
+      run_cycles(r.model(), 300);
+      Model back = restore_state(path);
+      run_cycles(back, 300);
+      QCOMPARE(state_hash(back), state_hash(r.model()));
+      hash[t - 1] = state_hash(r.model());
+    }
+    set_thread_count(1);
+    QCOMPARE(hash[0], hash[1]);
+  }
+
+  // Excavating one of two stacked cubes removes its nodes and zones; the other keeps its own.
+  void deletingADeformableBlock() {
+    ScriptRun r;
+    r.run(stack(2, 1, 1e9, kRollers) + "step 100\ndelete block=3\nstep 100");
+    const Model& m = r.model();
+    QCOMPARE(m.blocks3.size(), size_t(2));
+    const Blocks3& B = m.blocks3;
+    QCOMPARE(B.node_begin[1], 0u);
+    QCOMPARE(size_t(B.node_end[1]), m.continuum3.node_count());
+    for (const Vec3& p : m.continuum3.pos) QVERIFY(p.z() < 1.01);
+  }
+
+  // Bad input names the line and the block.
+  void badInputIsNamed() {
+    const auto fails = [](const std::string& text, const char* expect) {
+      ScriptRun r;
+      try {
+        r.run(text);
+      } catch (const ScriptError& e) {
+        qInfo("%s", e.what());
+        return std::string(e.what()).find(expect) != std::string::npos;
+      }
+      return false;
+    };
+    const std::string cube =
+        "dimension 3\ntolerance 0.01\nmaterial define stone density=2000\n"
+        "material define rock density=2000 E=1e9 nu=0.25\n";
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=stone\nzone generate edge=0.5",
+                  "block 1: its material has no elastic constants"));
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5 order=2",
+                  "order=2"));
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
+                         "boundary stress=1,2,3",
+                  "SXX,SYY,SZZ,SXY,SYZ,SXZ"));
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
+                         "boundary fix=z z=5,6",
+                  "no node lies in that box"));
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
+                         "jset dip=30 ddir=0 spacing=0.5",
+                  "is deformable: cut blocks before"));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestDeformable3)
+#include "test_deformable3.moc"
