@@ -122,21 +122,24 @@ long check_vtp(const QString& path, QString& why) {
     if (name == QLatin1String("Piece")) {
       points = at.value("NumberOfPoints").toLong();
       cells = at.value("NumberOfPolys").toLong() + at.value("NumberOfLines").toLong() +
-              at.value("NumberOfVerts").toLong();
+              at.value("NumberOfVerts").toLong() + at.value("NumberOfCells").toLong();
     } else if (name == QLatin1String("Points") || name == QLatin1String("CellData") ||
                name == QLatin1String("PointData") || name == QLatin1String("Polys") ||
-               name == QLatin1String("Lines") || name == QLatin1String("Verts")) {
+               name == QLatin1String("Lines") || name == QLatin1String("Verts") ||
+               name == QLatin1String("Cells")) {
       section = name.toString();
     } else if (name == QLatin1String("DataArray")) {
       const long comps = at.value("NumberOfComponents").toLong();
       const QString array = at.value("Name").toString();
       const long values =
           xml.readElementText().split(QRegularExpression("\\s+"), Qt::SkipEmptyParts).size();
-      const long expect = section == "Points"      ? 3 * points
-                          : section == "PointData" ? comps * points
-                          : section == "CellData"  ? comps * cells
-                          : array == "offsets"     ? cells
-                                                   : -2;
+      const long expect = section == "Points"                             ? 3 * points
+                          : section == "PointData"                        ? comps * points
+                          : section == "CellData"                         ? comps * cells
+                          : array == "offsets"                            ? cells
+                          : array == "types"                              ? cells
+                          : array == "connectivity" && section == "Cells" ? 4 * cells
+                                                                          : -2;
       if (expect != -2 && values != expect)
         return why = QString("%1: %2 has %3 values, expected %4")
                          .arg(path, array)
@@ -426,6 +429,30 @@ class TestExamples : public QObject {
     QVERIFY(check_vtp(r.dir + "/vtk/contacts_0000.vtp", why) > 4 * s["contacts"].toInt() - 1);
     QVERIFY2(why.isEmpty(), qPrintable(why));
   }
+  void column3dSettlesLikeTheClosedForm() {
+    const Run r = run_example("column_3d", {}, dir_);
+    QCOMPARE(r.exit_code, 0);
+    QVERIFY(r.out.contains("crack bed: 2 -> 3 blocks"));
+    const QJsonObject s = read_summary(r.dir);
+    QCOMPARE(s["dimension"].toInt(), 3);
+    QVERIFY(s["final_ratio"].toDouble() <= 1e-6);
+    // rho g H^2 / (2M) in the rock plus the two joints' closures (weight above over kn).
+    const double m = 5e9 * 0.75 / (1.25 * 0.5), g = 2600 * 9.81;
+    const double rock = g * 16 / (2 * m), base = g * 4 / 1e10, bed = g * 2 / 1e10;
+    auto h = read_history(r.dir);
+    const double top = -h["top"].back();
+    const double closure = h["below_bed"].back() - h["above_bed"].back();
+    qInfo("top settlement %.5e m (%.5e), bedding joint closure %.4e m (%.4e)", top,
+          rock + base + bed, closure, bed);
+    QVERIFY(std::abs(top / (rock + base + bed) - 1) < 0.01);
+    QVERIFY(std::abs(closure / bed - 1) < 0.03);
+    // The tetrahedra in ParaView: one cell per zone, every array the right length.
+    QString why;
+    QVERIFY(check_vtp(r.dir + "/vtk/zones_0000.vtu", why) > 1000);
+    QVERIFY2(why.isEmpty(), qPrintable(why));
+    QFile pvd(r.dir + "/vtk/zones.pvd");
+    QVERIFY(pvd.open(QIODevice::ReadOnly) && pvd.readAll().contains("zones_0000.vtu"));
+  }
   void rockWedgeStandsThenSlidesAlongTheIntersection() {
     const Run r = run_example("rock_wedge", {}, dir_);
     QCOMPARE(r.exit_code, 0);
@@ -456,11 +483,10 @@ class TestExamples : public QObject {
     QVERIFY(blue > samples / 100 && red > samples / 10);
   }
   void everyExampleIsChecked() {
-    const QStringList checked{"block_on_incline.tess",  "brick_wall.tess",
-                              "brick_wall_3d.tess",     "deformable_arch.tess",
-                              "masonry_arch.tess",      "rock_slope.tess",
-                              "rock_wedge.tess",        "toppling_stack.tess",
-                              "tunnel_deformable.tess", "tunnel_jointed.tess"};
+    const QStringList checked{
+        "block_on_incline.tess", "brick_wall.tess",        "brick_wall_3d.tess", "column_3d.tess",
+        "deformable_arch.tess",  "masonry_arch.tess",      "rock_slope.tess",    "rock_wedge.tess",
+        "toppling_stack.tess",   "tunnel_deformable.tess", "tunnel_jointed.tess"};
     QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
     QCOMPARE(found, checked);
   }

@@ -230,6 +230,47 @@ void write_zones(const Model& m, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
+// Zones of deformable 3D blocks as an UnstructuredGrid of tetrahedra (VTK cell type 10): node
+// displacement and velocity; per zone the stress tensor, principal stresses, strains, state.
+void write_zones3(const Model& m, const std::string& path) {
+  const Continuum3& c = m.continuum3;
+  const size_t nn = c.node_count(), nz = c.zone_count();
+  std::ofstream out = open_file(path);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+         "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\""
+      << nn << "\" NumberOfCells=\"" << nz << "\">\n<Points>\n";
+  vec3_array(out, "Points", nn, [&](size_t n) { return c.pos[n]; });
+  out << "</Points>\n<Cells>\n";
+  array(out, "Int64", "connectivity", 1, 4 * nz, [&](size_t k) { return c.zones[k / 4][k % 4]; });
+  array(out, "Int64", "offsets", 1, nz, [](size_t z) { return 4 * (z + 1); });
+  array(out, "UInt8", "types", 1, nz, [](size_t) { return 10; });
+  out << "</Cells>\n<PointData Vectors=\"displacement\">\n";
+  vec3_array(out, "displacement", nn, [&](size_t n) { return Vec3(c.pos[n] - c.pos0[n]); });
+  vec3_array(out, "velocity", nn, [&](size_t n) { return c.vel[n]; });
+  out << "</PointData>\n<CellData Scalars=\"sigma1\">\n";
+  // The stress tensor in ParaView's order for symmetric tensors: XX, YY, ZZ, XY, YZ, XZ.
+  array(out, "Float64", "stress", 6, nz, [&](size_t k) {
+    const ZoneStress& t = c.stress[k / 6];
+    const double v[6] = {t.xx, t.yy, t.zz, t.xy, t.yz, t.xz};
+    return v[k % 6];
+  });
+  std::vector<Principal> p(nz);
+  for (size_t z = 0; z < nz; ++z) p[z] = principal_3d(c.stress[z]);
+  array(out, "Float64", "sigma1", 1, nz, [&](size_t z) { return p[z].s[0]; });
+  array(out, "Float64", "sigma2", 1, nz, [&](size_t z) { return p[z].s[1]; });
+  array(out, "Float64", "sigma3", 1, nz, [&](size_t z) { return p[z].s[2]; });
+  array(out, "Float64", "strain", 6, nz, [&](size_t k) {
+    const StrainIncrement e = total_strain(c, k / 6);
+    const double v[6] = {e.xx, e.yy, e.zz, e.xy, e.yz, e.xz};
+    return v[k % 6];
+  });
+  array(out, "Int32", "state", 1, nz, [&](size_t z) { return c.state[z]; });
+  array(out, "Int32", "material", 1, nz,
+        [&](size_t z) { return static_cast<int>(c.material[z]) - 1; });
+  out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
 }  // namespace
 
 int contact_state_code(uint8_t flags) {
@@ -256,25 +297,30 @@ void VtkSeries::write(const Model& m) {
     write_contacts(m, dir_ + "/contacts_" + name);
   }
   // Zones from the first snapshot that has them; a collection lists only files that exist.
-  if (m.continuum.zone_count() > 0) {
+  if (m.continuum.zone_count() > 0 || m.continuum3.zone_count() > 0) {
     if (zones_from_ < 0) zones_from_ = static_cast<int>(times_.size());
-    write_zones(m, dir_ + "/zones_" + name);
+    if (m.dim == 3) {
+      std::snprintf(name, sizeof name, "%04zu.vtu", times_.size());
+      write_zones3(m, dir_ + "/zones_" + name);
+      zones_ext_ = "vtu";
+    } else {
+      write_zones(m, dir_ + "/zones_" + name);
+    }
   }
   times_.push_back(m.time);
   write_collection("blocks");
   write_collection("contacts");
-  if (zones_from_ >= 0) write_collection("zones", static_cast<size_t>(zones_from_));
+  if (zones_from_ >= 0) write_collection("zones", static_cast<size_t>(zones_from_), zones_ext_);
 }
 
-void VtkSeries::write_collection(const std::string& name, size_t first) const {
+void VtkSeries::write_collection(const std::string& name, size_t first, const char* ext) const {
   const std::string path = dir_ + "/" + name + ".pvd";
   std::ofstream out = open_file(path);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   char buf[160];
   for (size_t f = first; f < times_.size(); ++f) {
-    std::snprintf(buf, sizeof buf,
-                  "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n", times_[f],
-                  name.c_str(), f);
+    std::snprintf(buf, sizeof buf, "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.%s\"/>\n",
+                  times_[f], name.c_str(), f, ext);
     out << buf;
   }
   out << "</Collection>\n</VTKFile>\n";
