@@ -31,7 +31,7 @@ void carry_state(const Model& m, const Contact3& c, SubContact& s,
   const SubContact& o = old[static_cast<size_t>(match)];
   used[static_cast<size_t>(match)] = 1;
   s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
-  s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags;
+  s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags, s.closure = o.closure;
 }
 
 namespace {
@@ -218,7 +218,7 @@ double joint_forces3(const Model& m, Contact3& c) {
   double deepest = 0.0, fastest = 0.0;
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
-    const double overlap = without_roundoff(-s.gap, roundoff);
+    const double overlap = without_roundoff(-s.gap + s.closure, roundoff);
     const double un = overlap + s.dilation;
     if (stays_open(un, s.fn, s.flags)) {
       s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();

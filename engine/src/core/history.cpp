@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 16> kNames{{
+constexpr std::array<QuantityName, 24> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -102,7 +102,43 @@ constexpr std::array<QuantityName, 16> kNames{{
     {HistoryQuantity::kZDisp, "zdisp", true},
     {HistoryQuantity::kZVel, "zvel", true},
     {HistoryQuantity::kZPos, "zpos", true},
+    {HistoryQuantity::kSxx, "sxx", false},
+    {HistoryQuantity::kSyy, "syy", false},
+    {HistoryQuantity::kSzz, "szz", false},
+    {HistoryQuantity::kSxy, "sxy", false},
+    {HistoryQuantity::kSyz, "syz", false},
+    {HistoryQuantity::kSxz, "sxz", false},
+    {HistoryQuantity::kSigma1, "sigma1", false},
+    {HistoryQuantity::kSigma3, "sigma3", false},
 }};
+
+// A zone's stress component or principal stress (2D: in the plane, as the pictures show).
+double zone_value(const ZoneStress& t, HistoryQuantity q, bool three) {
+  switch (q) {
+    case HistoryQuantity::kSxx:
+      return t.xx;
+    case HistoryQuantity::kSyy:
+      return t.yy;
+    case HistoryQuantity::kSzz:
+      return t.zz;
+    case HistoryQuantity::kSxy:
+      return t.xy;
+    case HistoryQuantity::kSyz:
+      return t.yz;
+    case HistoryQuantity::kSxz:
+      return t.xz;
+    default:
+      break;
+  }
+  double s1 = 0, s3 = 0;
+  if (three) {
+    const Principal p = principal_3d(t);
+    s1 = p.s[0], s3 = p.s[2];
+  } else {
+    principal_stresses(t, s1, s3);
+  }
+  return q == HistoryQuantity::kSigma1 ? s1 : s3;
+}
 }  // namespace
 
 int Histories::find(const std::string& label) const {
@@ -120,6 +156,10 @@ bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& b
   return false;
 }
 
+bool is_zone_quantity(HistoryQuantity q) {
+  return q >= HistoryQuantity::kSxx && q <= HistoryQuantity::kSigma3;
+}
+
 const char* history_quantity_name(HistoryQuantity q) {
   for (const auto& n : kNames)
     if (n.q == q) return n.name;
@@ -134,8 +174,18 @@ std::vector<std::string> history_quantity_names() {
 
 double history_value(const Model& m, const HistorySeries& s) {
   const Blocks& B = m.blocks;
-  // A block history whose block was deleted (-2) reads NaN from then on.
+  // A block history whose block was deleted (-2) reads NaN from then on; so does a zone's.
   if (s.block == -2) return std::nan("");
+  if (is_zone_quantity(s.quantity)) {
+    const auto z = static_cast<size_t>(s.zone);
+    if (m.dim == 3)
+      return s.zone >= 0 && z < m.continuum3.zone_count()
+                 ? zone_value(m.continuum3.stress[z], s.quantity, true)
+                 : std::nan("");
+    return s.zone >= 0 && z < m.continuum.zone_count()
+               ? zone_value(m.continuum.stress[z], s.quantity, false)
+               : std::nan("");
+  }
   const auto b = static_cast<size_t>(std::max(0, s.block));
   if (m.dim == 3 && s.block >= 0) return history_value3(m, s.quantity, b, s.node);
   // Deformable blocks: a node's displacement, velocity and position, or (for the block as a

@@ -2,18 +2,52 @@
 
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/contact2d/interfaces.hpp"
+#include "tessera/contact3d/detection3.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
 #include "tessera/core/step.hpp"
 
 namespace tessera {
 
-ZoneStress StressField::at(double y) const {
-  const double d = y - y0;
+ZoneStress StressField::at(double v) const {
+  const double d = v - y0;
   return {base.xx + gradient.xx * d, base.yy + gradient.yy * d, base.xy + gradient.xy * d,
-          base.zz + gradient.zz * d};
+          base.zz + gradient.zz * d, base.yz + gradient.yz * d, base.xz + gradient.xz * d};
 }
+
+namespace {
+size_t preload_contacts3(Model& m, const StressField& field) {
+  if (m.detection_due) detect_contacts3(m);
+  for (Contact3& c : m.contacts3) update_plane3(m, c);
+  const double shut = 1e-3 * m.tolerance();
+  size_t loaded = 0;
+  for (Contact3& c : m.contacts3) {
+    const double kn = m.joints[c.joint].kn;
+    if (!(kn > 0.0)) continue;
+    const Vec3 n = c.normal;
+    bool any = false;
+    for (SubContact& s : c.subs) {
+      if (s.gap > shut) continue;
+      const ZoneStress t = field.at(s.point.z());
+      // Traction on block a, whose outward normal is -n: -sigma n (compression positive).
+      const Vec3 sn(t.xx * n.x() + t.xy * n.y() + t.xz * n.z(),
+                    t.xy * n.x() + t.yy * n.y() + t.yz * n.z(),
+                    t.xz * n.x() + t.yz * n.y() + t.zz * n.z());
+      const double normal = -n.dot(sn);
+      if (normal <= 0.0) continue;
+      s.closure = normal / kn + s.gap;
+      s.un_prev = s.dilation, s.fn = 0.0;
+      s.fs = s.area * (-sn - normal * n);
+      any = true;
+    }
+    loaded += any;
+  }
+  return loaded;
+}
+}  // namespace
 
 size_t preload_contacts(Model& m, const StressField& field) {
   prepare(m);
+  if (m.dim == 3) return preload_contacts3(m, field);
   if (m.detection_due) detect_contacts(m);
   update_contact_geometry(m);
   Contacts& C = m.contacts;

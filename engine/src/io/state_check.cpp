@@ -226,6 +226,9 @@ void check_rest(Checker& c, const Model& m) {
     const size_t nodes = m.dim == 3 ? m.continuum3.pos.size() : nn;
     c.require(h.node >= -1 && h.node < int64_t(nodes),
               "history '" + h.label + "' names a node that does not exist");
+    const size_t zones = m.dim == 3 ? m.continuum3.zones.size() : nz;
+    c.require(h.zone >= -1 && h.zone < int64_t(zones),
+              "history '" + h.label + "' names a zone that does not exist");
   }
   c.require(m.dim == 2 || m.dim == 3, "the dimension is neither 2 nor 3");
   c.require(m.det_x.empty() || m.det_x.size() == m.blocks.size(), "Verlet references differ");

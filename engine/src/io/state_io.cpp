@@ -27,6 +27,7 @@ template <class F>
 void members(const SubContact& s, F f) {
   f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
   f(s.sd2), f(s.fs), f(s.flags), f(s.force), f(s.node), f(s.node_side), f(s.tri), f(s.weight);
+  f(s.closure);
 }
 template <class F>
 void members(const RigidBody3& b, F f) {
@@ -184,7 +185,8 @@ void fields(IO& io, auto& m) {
   count = H.series.size();
   io.items(count);
   H.series.resize(count);
-  for (auto& s : H.series) io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label);
+  for (auto& s : H.series)
+    io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label), io.pod(s.zone);
   io.vec(H.cycles), io.vec(H.values);
   io.pod(m.cycle), io.pod(m.time), io.pod(m.dt), io.pod(m.dt_dirty), io.pod(m.global_c);
   io.pod(m.max_unbalanced), io.pod(m.mean_applied), io.pod(m.ratio);

@@ -122,6 +122,23 @@ void Interpreter::cmd_solve(Args& a) {
   }
 }
 
+namespace {
+// The solid zone whose centroid is nearest p, or -1 if there is none.
+template <int D>
+int32_t nearest_zone(const ContinuumT<D>& c, const typename ContinuumT<D>::Vec& p) {
+  int32_t best = -1;
+  double d = 1e300;
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    if (c.material[z] == 0) continue;
+    typename ContinuumT<D>::Vec centre = ContinuumT<D>::Vec::Zero();
+    for (uint32_t n : c.zones[z]) centre += c.pos[n];
+    if (const double e = (centre / (D + 1.0) - p).norm(); e < d)
+      d = e, best = static_cast<int32_t>(z);
+  }
+  return best;
+}
+}  // namespace
+
 void Interpreter::cmd_history(Args& a) {
   if (a.words.size() == 2 && a.words[0] == "interval") {
     model_.histories.interval = static_cast<uint32_t>(integer(a.words[1], 1));
@@ -130,6 +147,7 @@ void Interpreter::cmd_history(Args& a) {
   }
   if (a.words.size() != 1)
     fail("write 'history QUANTITY [block=ID | at=X,Y] [label=NAME]' or 'history interval N'");
+  // (zone quantities sxx ... sigma3 take at= too: the zone nearest the point)
   HistorySeries s;
   bool per_block = false;
   if (!parse_history_quantity(a.words[0], s.quantity, per_block))
@@ -175,6 +193,17 @@ void Interpreter::cmd_history(Args& a) {
     s.label = has_label         ? label
               : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1)
                                 : s.label;
+  } else if (is_zone_quantity(s.quantity)) {
+    // A zone's stress: the zone whose centre is nearest the point.
+    std::string at;
+    if (!take(a, "at", at))
+      fail("a zone history needs at=" + std::string(model_.dim == 3 ? "X,Y,Z" : "X,Y") +
+           " (the zone nearest the point)");
+    take(a, "label", s.label);
+    a.words.clear();
+    s.zone = model_.dim == 3 ? nearest_zone(model_.continuum3, point3(at))
+                             : nearest_zone(model_.continuum, point(at));
+    if (s.zone < 0) fail("there are no zones: 'zone generate' makes blocks deformable");
   } else {
     take(a, "label", s.label);
   }

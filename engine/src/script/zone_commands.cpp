@@ -321,9 +321,12 @@ void Interpreter::cmd_insitu(Args& a) {
   if (model_.block_count() == 0) fail("there are no blocks to take the stress");
   if (three) {
     Continuum3& c = model_.continuum3;
-    if (c.zone_count() == 0) fail("nothing takes the stress: there are no zones ('zone generate')");
     initialize_stress(c, s0, g, v0);
-    log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones");
+    const size_t loaded = preload_contacts(model_, StressField{s0, g, v0});
+    if (c.zone_count() == 0 && loaded == 0)
+      fail("nothing takes the stress: there are no zones and no shut joints");
+    log("insitu: stresses set in " + std::to_string(c.zone_count()) + " zones and on " +
+        std::to_string(loaded) + " joint contacts");
     return;
   }
   Continuum& c = model_.continuum;

@@ -170,9 +170,11 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
     kept.fixity.push_back(c.fixity[n]);
     kept.fixed_vel.push_back(c.fixed_vel[n]);
   }
+  std::vector<int32_t> zone_map(c.zone_count(), -1);
   for (size_t z = 0; z < c.zone_count(); ++z) {
     const auto& t = c.zones[z];
     if (map[t[0]] < 0 || map[t[1]] < 0 || map[t[2]] < 0) continue;
+    zone_map[z] = static_cast<int32_t>(kept.zones.size());
     kept.zones.push_back({static_cast<uint32_t>(map[t[0]]), static_cast<uint32_t>(map[t[1]]),
                           static_cast<uint32_t>(map[t[2]])});
     kept.stress.push_back(c.stress[z]), kept.state.push_back(c.state[z]);
@@ -185,7 +187,10 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
     if (W.deformable[b] && !doomed[b])
       for (uint32_t v = W.vert_begin[b]; v < W.vert_begin[b + 1]; ++v)
         W.node[v] = static_cast<int32_t>(map[static_cast<size_t>(W.node[v])]);
-  // Histories at a node follow its new number; those of removed nodes end (as for blocks).
+  // Histories at a node or zone follow its new number; those of removed ones end.
+  for (auto& s : m.histories.series)
+    if (s.zone >= 0 && static_cast<size_t>(s.zone) < zone_map.size())
+      s.zone = zone_map[static_cast<size_t>(s.zone)];
   for (auto& s : m.histories.series)
     if (s.node >= 0 && static_cast<size_t>(s.node) < map.size()) {
       const int64_t n = map[static_cast<size_t>(s.node)];

@@ -207,6 +207,9 @@ void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
       s.node = n >= 0 ? static_cast<int32_t>(n) : -1;
       if (n < 0) s.block = -2;
     }
+  for (auto& s : m.histories.series)
+    if (s.zone >= 0 && static_cast<size_t>(s.zone) < zone_map.size())
+      s.zone = static_cast<int32_t>(zone_map[static_cast<size_t>(s.zone)]);
   m.det_node3.clear();
 }
 

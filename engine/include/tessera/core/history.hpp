@@ -26,7 +26,15 @@ enum class HistoryQuantity : uint8_t {
   kTimestep,  // of the model
   kZDisp,
   kZVel,
-  kZPos  // of a block of a 3D model
+  kZPos,  // of a block of a 3D model
+  kSxx,
+  kSyy,
+  kSzz,
+  kSxy,
+  kSyz,
+  kSxz,
+  kSigma1,
+  kSigma3  // of one zone (tension positive; sigma1 the most compressive)
 };
 
 struct HistorySeries {
@@ -34,6 +42,7 @@ struct HistorySeries {
   int32_t block = -1;  // block index for block quantities
   int32_t node = -1;   // continuum node, when the block is deformable
   std::string label;   // CSV column heading
+  int32_t zone = -1;   // zone for zone quantities (-1 once it is deleted)
 };
 
 struct Histories {
@@ -51,6 +60,8 @@ struct Histories {
 // Quantity by script keyword, true if known; `block_quantity` says whether it needs a block.
 bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity);
 const char* history_quantity_name(HistoryQuantity q);
+// Whether a quantity is a zone's stress (sampled in one zone, picked by a point).
+bool is_zone_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.
 std::vector<std::string> history_quantity_names();
 // Current value of one series.
