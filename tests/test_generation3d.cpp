@@ -2,6 +2,7 @@
 // vertices bit-identical), joint sets, walls, and the script's messages for 3D mistakes.
 #include <QtTest>
 #include <cmath>
+#include <numbers>
 
 #include "support.hpp"
 #include "tessera/generation/cutting3.hpp"
@@ -125,9 +126,76 @@ class TestGeneration3d : public QObject {
     QVERIFY(std::abs(total_volume(m) - 4 * 5 * 0.4 * 0.2 * 0.2) < 1e-12);
   }
 
+  void aTunnelCutsItsOpeningExactlyInRounds() {
+    // A 16-sided circle of radius 2 along y through a 10 m cube, 6 m long in 3 rounds.
+    ScriptRun r;
+    r.run(std::string(kHead) +
+          "region -5,0,-5 5,10,5 material=rock\n"
+          "tunnel circle centre=0,0,0 axis=0,1,0 radius=2 length=6 rounds=3 segments=16 "
+          "name=T group=dig\n");
+    Model& m = r.model();
+    const Blocks3& B = m.blocks3;
+    // 16 sectors of rock along the opening and 16 beyond its end, 3 rounds, the rock ahead.
+    QCOMPARE(B.size(), size_t(16 + 16 + 3 + 1));
+    QVERIFY(std::abs(total_volume(m) - 1000.0) < 1e-9 * 1000.0);
+    const double section = 0.5 * 16 * 4.0 * std::sin(2 * std::numbers::pi / 16);
+    for (int round = 1; round <= 3; ++round) {
+      const int g = m.group_index("dig_" + std::to_string(round), false);
+      QVERIFY(g >= 0);
+      double v = 0.0;
+      for (size_t b = 0; b < B.size(); ++b) {
+        if (B.group[b] != g) continue;
+        v += B.volume[b];
+        // Inside the walls and within its round.
+        for (uint32_t k = B.vert_begin[b]; k < B.vert_begin[b + 1]; ++k) {
+          const Vec3& x = B.world_vertex[k];
+          QVERIFY(std::hypot(x.x(), x.z()) < 2.0 + 1e-9);
+          QVERIFY(x.y() > 2.0 * (round - 1) - 1e-9 && x.y() < 2.0 * round + 1e-9);
+        }
+      }
+      QVERIFY2(std::abs(v - 2.0 * section) < 1e-9 * v, std::to_string(v).c_str());
+    }
+    // The walls carry the opening's joint name; the other new faces are 'split'.
+    int walls = 0, splits = 0;
+    for (int t : B.face_tag) {
+      walls += t >= 0 && m.joint_tags[static_cast<size_t>(t)] == "T";
+      splits += t >= 0 && m.joint_tags[static_cast<size_t>(t)] == "split";
+    }
+    QCOMPARE(walls, 16 + 3 * 16);  // each rock sector's wall, and each round's 16
+    QVERIFY(splits >= 2 * 16);
+  }
+
+  void aTunnelThroughJointedRockAddsUpAndRuns() {
+    // A horseshoe along a skewed axis through jointed rock: volumes add up, no blocks overlap,
+    // and the rounds can be excavated one after another.
+    ScriptRun r;
+    r.run(std::string(kHead) +
+          "joint define j kn=1e10 ks=1e10 friction=40 cohesion=1e6 tension=1e6\njoint assign j\n"
+          "region -6,0,-6 6,12,6 material=rock\n"
+          "jset dip=70 ddir=30 spacing=3 origin=0.3,0.2,0.1 name=J1\n"
+          "tunnel horseshoe centre=0.5,1,-2 axis=0.1,1,0 width=4 height=4 length=9 rounds=3 "
+          "group=dig\n"
+          "delete group=dig_1\nstep 20\ndelete group=dig_2\nstep 20\n");
+    const Model& m = r.model();
+    QCOMPARE(m.cycle, uint64_t(40));
+    const double section = 4.0 * 2.0 + 0.5 * 12 * 4.0 * std::sin(std::numbers::pi / 12);
+    // Two rounds of 3 m along the axis excavated.
+    const double opened = 1728.0 - total_volume(m);
+    QVERIFY2(std::abs(opened - 2 * 3.0 * section) < 1e-6, std::to_string(opened).c_str());
+  }
+
   void mistakesInThreeDimensionsAreNamed() {
-    QVERIFY(error_of(std::string(kHead) + "tunnel circle centre=0,0 radius=1\n")
-                .find("not available in 3D") != std::string::npos);
+    QVERIFY(error_of(std::string(kHead) + "region 0,0,0 1,1,1\ntunnel circle centre=0,0 "
+                                          "axis=0,1,0 radius=1 length=1\n")
+                .find("3D point") != std::string::npos);
+    QVERIFY(error_of(std::string(kHead) + "region 0,0,0 1,1,1\ntunnel circle centre=0,0,0 "
+                                          "radius=1 length=1\n")
+                .find("axis") != std::string::npos);
+    QVERIFY(error_of(std::string(kHead) + "region 0,0,0 1,1,1\ntunnel polygon 0,0 1,0 1,1\n")
+                .find("circle or horseshoe") != std::string::npos);
+    QVERIFY(error_of(std::string(kHead) + "region 0,0,0 1,1,1\ntunnel circle centre=5,5,5 "
+                                          "axis=0,0,1 radius=1 length=1\n")
+                .find("reaches no block") != std::string::npos);
     QVERIFY(error_of("block 0,0 1,0 1,1\ndimension 3\n").find("before the first block") !=
             std::string::npos);
     QVERIFY(error_of(std::string(kHead) + "block box 0,0,0 1,0,1\n").find("no volume") !=

@@ -3,6 +3,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -55,24 +56,20 @@ ExactBlock compact(const std::vector<Point>& pts, std::vector<std::vector<uint32
 bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, const JointPlane& jp, ExactBlock& pos,
              ExactBlock& neg) {
   const size_t nv = blk.v.size();
+  // A vertex within a billionth of the block's size of the plane is taken as on it, so that a
+  // plane passing a hair's breadth from a corner (as round-off puts it) leaves no sliver edge;
+  // a plane that would shave off no more passes along a face and does not cut.
+  const double size = (blk.hi - blk.lo).norm(), snap = 1e-9 * size * jp.normal.norm();
   std::vector<CGAL::Oriented_side> side(nv);
   bool any_pos = false, any_neg = false;
   for (size_t i = 0; i < nv; ++i) {
-    side[i] = plane.oriented_side(blk.v[i]);
+    const double d = CGAL::to_double(plane.a() * blk.v[i].x() + plane.b() * blk.v[i].y() +
+                                     plane.c() * blk.v[i].z() + plane.d());
+    side[i] = std::abs(d) <= snap ? CGAL::ON_ORIENTED_BOUNDARY : plane.oriented_side(blk.v[i]);
     any_pos |= side[i] == CGAL::ON_POSITIVE_SIDE;
     any_neg |= side[i] == CGAL::ON_NEGATIVE_SIDE;
   }
   if (!any_pos || !any_neg) return false;
-  // A plane that would shave off less than a billionth of the block's size passes along its
-  // face: no sliver.
-  double reach_pos = 0.0, reach_neg = 0.0;
-  const double size = (blk.hi - blk.lo).norm();
-  for (size_t i = 0; i < nv; ++i) {
-    const double d = CGAL::to_double(plane.a() * blk.v[i].x() + plane.b() * blk.v[i].y() +
-                                     plane.c() * blk.v[i].z() + plane.d());
-    reach_pos = std::max(reach_pos, d), reach_neg = std::max(reach_neg, -d);
-  }
-  if (std::min(reach_pos, reach_neg) < 1e-9 * size * jp.normal.norm()) return false;
   std::vector<Point> pts = blk.v;
   // One new vertex per crossing edge, shared by both sides.
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> crossing;
@@ -154,6 +151,47 @@ bool cut_one(const ExactBlock& blk, const K::Plane_3& plane, const JointPlane& j
   return true;
 }
 
+// Which side of a plane a block lies on: +1 positive, -1 negative (touching is not crossing), 0
+// when it is cut into `pos` and `neg`, whose new faces take `tag`.
+int split(const ExactBlock& blk, const K::Plane_3& plane, int tag, ExactBlock& pos,
+          ExactBlock& neg) {
+  JointPlane jp;
+  jp.normal =
+      Vec3(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()), CGAL::to_double(plane.c()));
+  jp.tag = tag;
+  if (cut_one(blk, plane, jp, pos, neg)) return 0;
+  double reach_pos = 0.0, reach_neg = 0.0;
+  for (const Point& p : blk.v) {
+    const double d =
+        CGAL::to_double(plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d());
+    reach_pos = std::max(reach_pos, d), reach_neg = std::max(reach_neg, -d);
+  }
+  return reach_pos >= reach_neg ? 1 : -1;
+}
+
+ExactBlock exact(const CutBlock& c, size_t parent) {
+  ExactBlock e;
+  for (const Vec3& p : c.poly.vertices) e.v.emplace_back(p.x(), p.y(), p.z());
+  e.faces = c.poly.faces;
+  e.tags = c.face_tags;
+  e.tags.resize(e.faces.size(), -1);
+  e.parent = parent;
+  bound(e);
+  return e;
+}
+
+CutBlock rounded(const ExactBlock& e, int label) {
+  CutBlock c;
+  for (const Point& p : e.v)
+    c.poly.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                 CGAL::to_double(p.z()));
+  c.poly.faces = e.faces;
+  c.face_tags = e.tags;
+  c.parent = e.parent;
+  c.label = label;
+  return c;
+}
+
 }  // namespace
 
 Vec3 normal_from_dip(double dip, double dip_direction) {
@@ -169,16 +207,7 @@ Vec3 normal_from_dip(double dip, double dip_direction) {
 std::vector<CutBlock> cut_blocks(const std::vector<CutBlock>& blocks,
                                  const std::vector<JointPlane>& planes) {
   std::vector<ExactBlock> current;
-  for (size_t i = 0; i < blocks.size(); ++i) {
-    ExactBlock e;
-    for (const Vec3& p : blocks[i].poly.vertices) e.v.emplace_back(p.x(), p.y(), p.z());
-    e.faces = blocks[i].poly.faces;
-    e.tags = blocks[i].face_tags;
-    e.tags.resize(e.faces.size(), -1);
-    e.parent = i;
-    bound(e);
-    current.push_back(std::move(e));
-  }
+  for (size_t i = 0; i < blocks.size(); ++i) current.push_back(exact(blocks[i], i));
   for (const JointPlane& jp : planes) {
     const K::Plane_3 plane(Point(jp.point.x(), jp.point.y(), jp.point.z()),
                            K::Vector_3(jp.normal.x(), jp.normal.y(), jp.normal.z()));
@@ -204,15 +233,102 @@ std::vector<CutBlock> cut_blocks(const std::vector<CutBlock>& blocks,
     current = std::move(next);
   }
   std::vector<CutBlock> out;
-  for (const ExactBlock& e : current) {
-    CutBlock c;
-    for (const Point& p : e.v)
-      c.poly.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                   CGAL::to_double(p.z()));
-    c.poly.faces = e.faces;
-    c.face_tags = e.tags;
-    c.parent = e.parent;
-    out.push_back(std::move(c));
+  for (const ExactBlock& e : current) out.push_back(rounded(e, -1));
+  return out;
+}
+
+std::pair<Vec3, Vec3> opening_frame(const Vec3& axis) {
+  const Vec3 a = axis.normalized();
+  // Up is +z seen along the axis; a vertical shaft takes +y.
+  Vec3 v = Vec3::UnitZ() - a.z() * a;
+  if (v.norm() < 1e-6) v = Vec3::UnitY() - a.y() * a;
+  v.normalize();
+  return {v.cross(a), v};
+}
+
+std::vector<CutBlock> cut_opening(const std::vector<CutBlock>& blocks, const Opening3& o) {
+  const Vec3 a = o.axis.normalized();
+  const auto [u, v] = opening_frame(a);
+  const auto exact_point = [](const Vec3& x) { return Point(x.x(), x.y(), x.z()); };
+  const size_t n = o.section.size();
+  std::vector<Point> corner;
+  Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& s : o.section) {
+    corner.push_back(exact_point(o.start + s.x() * u + s.y() * v));
+    mid += s / static_cast<double>(n);
+  }
+  const Point c = exact_point(o.start + mid.x() * u + mid.y() * v);
+  const K::Vector_3 along(a.x(), a.y(), a.z());
+  // Walls (outside positive), planes through the axis and each corner (positive ahead of it,
+  // counter-clockwise seen along the axis), and the round boundaries across the axis (positive
+  // further along; the first is the portal, the last the end).
+  std::vector<K::Plane_3> wall, radial, across;
+  for (size_t k = 0; k < n; ++k) {
+    wall.emplace_back(corner[k], corner[(k + 1) % n], corner[k] + along);
+    radial.emplace_back(c, c + along, corner[k]);
+  }
+  for (int i = 0; i <= o.rounds; ++i)
+    across.emplace_back(exact_point(o.start + (o.length * i / o.rounds) * a), along);
+  std::vector<CutBlock> out;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const ExactBlock blk = exact(blocks[i], i);
+    ExactBlock pos, neg, part = blk;
+    // Blocks the open prism does not reach stay whole.
+    bool reached = true;
+    for (size_t k = 0; k <= n + 1 && reached; ++k) {
+      const bool portal = k == n, end = k == n + 1;
+      const K::Plane_3 p = portal ? across.front().opposite() : end ? across.back() : wall[k];
+      const int s = split(part, p, o.split_tag, pos, neg);
+      if (s > 0) reached = false;
+      if (s == 0) part = neg;
+    }
+    if (!reached) {
+      out.push_back(rounded(blk, -1));
+      continue;
+    }
+    // Rock past the portal or the end touches the rest along 'split' faces, not walls.
+    const auto add_rock = [&](ExactBlock e, bool past) {
+      if (past) std::replace(e.tags.begin(), e.tags.end(), o.wall_tag, o.split_tag);
+      out.push_back(rounded(e, -1));
+    };
+    // Rock along the opening, cut across at the portal and the end.
+    const auto add_along = [&](ExactBlock e) {
+      int s = split(e, across.front(), o.split_tag, pos, neg);
+      if (s < 0) return add_rock(e, true);
+      if (s == 0) add_rock(neg, true), e = pos;
+      s = split(e, across.back(), o.split_tag, pos, neg);
+      if (s > 0) return add_rock(e, true);
+      if (s == 0) add_rock(pos, true), e = neg;
+      add_rock(e, false);
+    };
+    // The rock around: each sector between two corners, outside its wall.
+    for (size_t k = 0; k < n; ++k) {
+      part = blk;
+      int s = split(part, radial[k], o.split_tag, pos, neg);
+      if (s < 0) continue;
+      if (s == 0) part = pos;
+      s = split(part, radial[(k + 1) % n], o.split_tag, pos, neg);
+      if (s > 0) continue;
+      if (s == 0) part = neg;
+      s = split(part, wall[k], o.wall_tag, pos, neg);
+      if (s > 0) add_along(part);
+      if (s == 0) add_along(pos);
+    }
+    // Inside the walls: rock before the portal and beyond the end, a piece per round between.
+    part = blk;
+    for (size_t k = 0; k < n; ++k)
+      if (split(part, wall[k], o.wall_tag, pos, neg) == 0) part = neg;
+    bool left = true;
+    for (int r = 0; r <= o.rounds && left; ++r) {
+      const int s = split(part, across[r], o.split_tag, pos, neg);
+      if (s < 0 && r == 0) add_rock(part, true);
+      if (s < 0 && r > 0) out.push_back(rounded(part, r - 1));
+      if (s < 0) left = false;
+      if (s == 0 && r == 0) add_rock(neg, true);
+      if (s == 0 && r > 0) out.push_back(rounded(neg, r - 1));
+      if (s == 0) part = pos;
+    }
+    if (left) add_rock(part, true);
   }
   return out;
 }

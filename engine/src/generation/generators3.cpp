@@ -15,13 +15,15 @@ size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
   return b;
 }
 
-size_t cut_model3(Model& m, const std::vector<size_t>& selection,
-                  const std::vector<JointPlane>& planes) {
-  Blocks3& B = m.blocks3;
+namespace {
+
+// The selected blocks as pieces to cut (with their indices in `owner`).
+std::vector<CutBlock> cut_input3(const Model& m, const std::vector<size_t>& selection,
+                                 std::vector<size_t>& owner) {
+  const Blocks3& B = m.blocks3;
   std::vector<uint8_t> chosen(B.size(), selection.empty() ? 1 : 0);
   for (size_t b : selection) chosen[b] = 1;
   std::vector<CutBlock> input;
-  std::vector<size_t> owner;
   for (size_t b = 0; b < B.size(); ++b) {
     if (!chosen[b]) continue;
     if (B.deformable[b])
@@ -34,13 +36,26 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
     input.push_back(std::move(c));
     owner.push_back(b);
   }
-  const std::vector<CutBlock> pieces = cut_blocks(input, planes);
-  if (pieces.size() == input.size()) return 0;
+  return input;
+}
+
+// Replaces each block cut into more than one piece by its pieces (a piece labelled L joins
+// group label_group[L]); returns the number of blocks added.
+size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vector<CutBlock>& pieces,
+                    const std::vector<int>& label_group) {
+  Blocks3& B = m.blocks3;
+  const auto group_of = [&](const CutBlock& p, int parent_group) {
+    return p.label >= 0 ? label_group[static_cast<size_t>(p.label)] : parent_group;
+  };
   // Keep the blocks no plane split; then the pieces of those that were.
-  std::vector<size_t> piece_count(input.size(), 0);
+  std::vector<size_t> piece_count(owner.size(), 0);
   for (const CutBlock& p : pieces) ++piece_count[p.parent];
+  for (const CutBlock& p : pieces)
+    if (piece_count[p.parent] == 1)
+      B.group[owner[p.parent]] = group_of(p, B.group[owner[p.parent]]);
+  if (pieces.size() == owner.size()) return 0;
   std::vector<uint8_t> doomed(B.size(), 0);
-  for (size_t i = 0; i < input.size(); ++i)
+  for (size_t i = 0; i < owner.size(); ++i)
     if (piece_count[i] > 1) doomed[owner[i]] = 1;
   const Blocks3 old = B;
   std::vector<int> map = B.remove(doomed);
@@ -49,7 +64,8 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
   for (const CutBlock& p : pieces) {
     const size_t parent = owner[p.parent];
     if (piece_count[p.parent] < 2) continue;
-    const size_t b = add_block3(m, p.poly, old.group[parent], old.material[parent], p.face_tags);
+    const size_t b =
+        add_block3(m, p.poly, group_of(p, old.group[parent]), old.material[parent], p.face_tags);
     B.fixity[b] = old.fixity[parent];
     B.fixed_v[b] = old.fixed_v[parent], B.fixed_w[b] = old.fixed_w[parent];
     B.body[b].velocity = old.body[parent].velocity;
@@ -64,6 +80,22 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
   m.block_contact_begin.clear();
   m.touch();
   return added;
+}
+
+}  // namespace
+
+size_t cut_model3(Model& m, const std::vector<size_t>& selection,
+                  const std::vector<JointPlane>& planes) {
+  std::vector<size_t> owner;
+  const std::vector<CutBlock> input = cut_input3(m, selection, owner);
+  return replace_cut3(m, owner, cut_blocks(input, planes), {});
+}
+
+size_t tunnel_model3(Model& m, const std::vector<size_t>& selection, const Opening3& o,
+                     const std::vector<int>& round_groups) {
+  std::vector<size_t> owner;
+  const std::vector<CutBlock> input = cut_input3(m, selection, owner);
+  return replace_cut3(m, owner, cut_opening(input, o), round_groups);
 }
 
 void add_wall3(Model& m, const WallSpec3& w) {

@@ -15,12 +15,12 @@ namespace tessera {
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
   static const std::map<std::string, Handler> h = [] {
     std::map<std::string, Handler> t = handlers();
-    for (const char* only2d : {"tunnel", "voronoi", "arch", "round"})
-      t[only2d] = &Interpreter::cmd_only2d;
+    for (const char* only2d : {"voronoi", "arch", "round"}) t[only2d] = &Interpreter::cmd_only2d;
     t["block"] = &Interpreter::cmd_block3;
     t["region"] = &Interpreter::cmd_region3;
     t["crack"] = &Interpreter::cmd_crack3;
     t["jset"] = &Interpreter::cmd_jset3;
+    t["tunnel"] = &Interpreter::cmd_tunnel3;
     t["wall"] = &Interpreter::cmd_wall3;
     t["fix"] = &Interpreter::cmd_fix3;
     t["velocity"] = &Interpreter::cmd_velocity3;
@@ -108,10 +108,8 @@ void Interpreter::cmd_region3(Args& a) {
   cmd_block3(a);
 }
 
-void Interpreter::cut3(Args& a, std::vector<JointPlane> planes, const std::string& what) {
-  std::string name = what + std::to_string(model_.joint_tags.size() + 1);
-  take(a, "name", name);
-  const auto sel = optional_selection(a);
+std::vector<size_t> Interpreter::cut_selection3(Args& a, bool selectable) {
+  const auto sel = selectable ? optional_selection(a) : std::vector<size_t>{};
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
   if (model_.blocks3.size() == 0) fail("there are no blocks to cut: make a region first");
@@ -122,12 +120,93 @@ void Interpreter::cut3(Args& a, std::vector<JointPlane> planes, const std::strin
       fail("block " + std::to_string(model_.blocks3.id[b]) +
            " is a piece of a joined block: cut before joining");
   }
+  return sel;
+}
+
+void Interpreter::cut3(Args& a, std::vector<JointPlane> planes, const std::string& what) {
+  std::string name = what + std::to_string(model_.joint_tags.size() + 1);
+  take(a, "name", name);
+  const auto sel = cut_selection3(a);
   const int tag = joint_tag(model_, name);
   for (JointPlane& p : planes) p.tag = tag;
   const size_t before = model_.blocks3.size();
   const size_t added = cut_model3(model_, sel, planes);
   log(a.command + " " + name + ": " + std::to_string(before) + " -> " +
       std::to_string(model_.blocks3.size()) + " blocks (" + std::to_string(added) + " pieces)");
+  overlap_checked_ = false;
+}
+
+void Interpreter::cmd_tunnel3(Args& a) {
+  if (a.words.empty())
+    fail("write 'tunnel circle|horseshoe centre=X,Y,Z axis=DX,DY,DZ length=L ...'");
+  const std::string shape = a.words[0];
+  a.words.erase(a.words.begin());
+  if (shape != "circle" && shape != "horseshoe")
+    fail("'" + shape + "' is not an opening shape of 3D models (circle or horseshoe)" +
+         suggest(shape, {"circle", "horseshoe"}));
+  const std::string what = "'tunnel " + shape + "'";
+  Opening3 o;
+  std::string v;
+  if (!take(a, "centre", v))
+    missing(a, "centre",
+            what + (shape == "circle" ? " (the centre of the portal)"
+                                      : " (the middle of the portal's floor)"));
+  o.start = point3(v);
+  if (!take(a, "axis", v)) missing(a, "axis", what + " (the direction it runs in, DX,DY,DZ)");
+  o.axis = point3(v);
+  if (!(o.axis.norm() > 0.0)) fail("the axis " + v + " has no direction");
+  if (!take_num(a, "length", o.length)) missing(a, "length", what);
+  if (!(o.length > 0.0)) fail("the length must be positive");
+  double rounds = 1, n = shape == "circle" ? 24 : 12;
+  take_num(a, "rounds", rounds);
+  take_num(a, "segments", n);
+  if (rounds != std::floor(rounds) || rounds < 1 || rounds > 1000)
+    fail("rounds is a whole number of rounds of advance from 1 to 1000");
+  o.rounds = static_cast<int>(rounds);
+  if (shape == "circle") {
+    double r = 0.0;
+    if (!take_num(a, "radius", r)) missing(a, "radius", what);
+    if (r <= 0.0 || n < 3 || n > 1e4)
+      fail("a circle needs a positive radius and 3 to 10,000 segments");
+    o.section = circle_outline(Vec2::Zero(), r, static_cast<int>(n));
+  } else {
+    double w = 0.0, h = 0.0;
+    if (!take_num(a, "width", w)) missing(a, "width", what);
+    if (!take_num(a, "height", h)) missing(a, "height", what);
+    if (w <= 0.0 || h < 0.5 * w || n < 2 || n > 1e4)
+      fail("a horseshoe needs width > 0, height >= width/2 and 2 to 10,000 segments");
+    o.section = horseshoe_outline(Vec2::Zero(), w, h, static_cast<int>(n));
+  }
+  std::string name = "tunnel" + std::to_string(model_.joint_tags.size() + 1), group;
+  take(a, "name", name);
+  if (!take(a, "group", group)) group = name;
+  // 'group=' names the opening's group, so the opening cuts every block it reaches.
+  const auto sel = cut_selection3(a, false);
+  // One group per round of advance: G, or G_1 ... G_N.
+  std::vector<int> groups;
+  std::vector<std::string> names;
+  for (int r = 1; r <= o.rounds; ++r) {
+    names.push_back(o.rounds == 1 ? group : group + "_" + std::to_string(r));
+    groups.push_back(model_.group_index(names.back(), true));
+  }
+  o.wall_tag = joint_tag(model_, name);
+  o.split_tag = joint_tag(model_, "split");
+  const size_t before = model_.blocks3.size();
+  tunnel_model3(model_, sel, o, groups);
+  std::vector<size_t> count(groups.size(), 0);
+  for (size_t b = 0; b < model_.blocks3.size(); ++b)
+    for (size_t r = 0; r < groups.size(); ++r) count[r] += model_.blocks3.group[b] == groups[r];
+  std::string rounds_text;
+  for (size_t r = 0; r < groups.size(); ++r)
+    rounds_text += (r ? ", " : "") + names[r] + " (" + std::to_string(count[r]) + ")";
+  if (std::all_of(count.begin(), count.end(), [](size_t c) { return c == 0; }))
+    fail("the opening reaches no block");
+  log("tunnel " + name + ": " + std::to_string(before) + " -> " +
+      std::to_string(model_.blocks3.size()) + " blocks; to excavate: " + rounds_text);
+  log("tunnel: the rock around the opening is split by planes through its axis and across it at "
+      "the portal and the end, a joint named 'split' (blocks are convex); give it properties "
+      "that keep it shut, e.g. 'joint assign NAME joints=split' with a high tensile strength "
+      "and cohesion");
   overlap_checked_ = false;
 }
 

@@ -94,7 +94,17 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
     throw std::invalid_argument("zones of size " + std::to_string(smallest) +
                                 " would make more than " + std::to_string(max_zones) +
                                 " zones; use a larger size");
-  // The block's edges are protected, so the faces and corners are kept as they are.
+  // The block's edges are protected, so the faces and corners are kept as they are; an edge far
+  // shorter than the zones would make the mesher refine without end.
+  for (const auto& face : block.faces)
+    for (size_t k = 0; k < face.size(); ++k) {
+      const double length =
+          (block.vertices[face[k]] - block.vertices[face[(k + 1) % face.size()]]).norm();
+      if (length < 1e-6 * smallest)
+        throw std::invalid_argument("the block has an edge " + std::to_string(length) +
+                                    " m long, too short to zone at size " +
+                                    std::to_string(smallest));
+    }
   CGAL::Random rng(0);
   Domain domain(surface, &rng);
   std::vector<std::vector<K::Point_3>> edges;

@@ -19,6 +19,12 @@ size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
 size_t cut_model3(Model& m, const std::vector<size_t>& selection,
                   const std::vector<JointPlane>& planes);
 
+// Cuts an opening through the selected blocks (all if empty) with `cut_opening`; the pieces
+// inside round i join group round_groups[i], the rest keep their parent's group. Returns the
+// number of blocks added.
+size_t tunnel_model3(Model& m, const std::vector<size_t>& selection, const Opening3& o,
+                     const std::vector<int>& round_groups);
+
 // A running-bond wall one brick thick: courses along x stacked in z, the wall's thickness along
 // y; every second course starts with a half brick.
 struct WallSpec3 {

@@ -173,6 +173,7 @@ class Interpreter {
   void cmd_region3(Args&);
   void cmd_crack3(Args&);
   void cmd_jset3(Args&);
+  void cmd_tunnel3(Args&);
   void cmd_wall3(Args&);
   void cmd_fix3(Args&);
   void cmd_velocity3(Args&);
@@ -199,6 +200,9 @@ class Interpreter {
   std::pair<int, int> group_material(Args& a);
   // Cuts the selection (all when none is given) by planes named `name`.
   void cut3(Args& a, std::vector<JointPlane> planes, const std::string& what);
+  // The rest of a cutting command's line: the selection if `selectable` (all blocks if none),
+  // refused where it holds a piece of a joined block.
+  std::vector<size_t> cut_selection3(Args& a, bool selectable = true);
   // Runs the geometry checks; errors fail unless the script said to go on.
   void run_checks(bool before_run);
   // A mean and optional standard deviation written as MEAN or MEAN,SD.
