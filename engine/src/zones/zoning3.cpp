@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -100,10 +101,14 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
     for (size_t k = 0; k < face.size(); ++k) {
       const double length =
           (block.vertices[face[k]] - block.vertices[face[(k + 1) % face.size()]]).norm();
-      if (length < 1e-6 * smallest)
-        throw std::invalid_argument("the block has an edge " + std::to_string(length) +
-                                    " m long, too short to zone at size " +
-                                    std::to_string(smallest));
+      if (length < 1e-6 * smallest) {
+        char why[160];
+        std::snprintf(why, sizeof why,
+                      "the block has an edge %.3g m long, too short to zone at "
+                      "size %.3g",
+                      length, smallest);
+        throw std::invalid_argument(why);
+      }
     }
   CGAL::Random rng(0);
   Domain domain(surface, &rng);
