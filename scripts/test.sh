@@ -7,6 +7,8 @@
 # libdbus under the sanitizers are not ours, and building the window with VTK and running every
 # example under the sanitizers took a third of CI's time; the engine they drive is checked by
 # the unit and verification programs.
+# Tests labelled `slow` (minutes of cycling in release, on code the other tests cover too) run in
+# release only.
 # Pass ctest options through, e.g. scripts/test.sh -L unit: they apply to both passes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,4 +18,4 @@ cmake --build --preset release
 ctest --preset release "$@"
 cmake --preset asan >/dev/null
 cmake --build --preset asan --target tessera_checks
-ctest --preset asan -L "unit|verification" "$@"
+ctest --preset asan -L "unit|verification" -LE slow "$@"

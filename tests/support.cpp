@@ -1,7 +1,10 @@
 #include "support.hpp"
 
+#include <QMetaMethod>
+#include <QTest>
 #include <cstring>
 #include <sstream>
+#include <vector>
 
 namespace tessera::test {
 
@@ -71,6 +74,36 @@ double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) 
   for (size_t i = 0; i < x.size(); ++i)
     sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+int run_tests(QObject& test, int argc, char** argv) {
+  std::vector<char*> args;
+  QStringList skip;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--skip") == 0 && i + 1 < argc) {
+      skip = QString(argv[++i]).split(',');
+      continue;
+    }
+    args.push_back(argv[i]);
+  }
+  // The test functions not skipped, named on the command line as Qt Test takes them.
+  std::vector<QByteArray> names;
+  if (!skip.isEmpty()) {
+    const QMetaObject* meta = test.metaObject();
+    for (int k = meta->methodOffset(); k < meta->methodCount(); ++k) {
+      const QMetaMethod f = meta->method(k);
+      const QByteArray name = f.name();
+      if (f.methodType() != QMetaMethod::Slot || f.access() != QMetaMethod::Private ||
+          f.parameterCount() != 0 || name.endsWith("_data") || name == "initTestCase" ||
+          name == "cleanupTestCase" || name == "init" || name == "cleanup" ||
+          skip.contains(QString::fromLatin1(name)))
+        continue;
+      names.push_back(name);
+    }
+    if (names.empty()) return 0;  // every function runs in a shard of its own
+  }
+  for (QByteArray& n : names) args.push_back(n.data());
+  return QTest::qExec(&test, static_cast<int>(args.size()), args.data());
 }
 
 }  // namespace tessera::test

@@ -1,6 +1,8 @@
 // Helpers shared by the tests: running script text in a temporary folder, hashing state.
 #pragma once
 
+#include <QCoreApplication>
+#include <QObject>
 #include <QTemporaryDir>
 #include <cstdint>
 #include <memory>
@@ -56,4 +58,17 @@ uint64_t solve_zones(ContinuumT<D>& c, double ratio, uint64_t max_cycles) {
 // Slope of the least-squares line through (x, y) samples.
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
 
+// Runs a Qt Test object like QTest::qExec, and also takes `--skip F1,F2`: every test function
+// but those (the rest of a program whose slow functions ctest runs as entries of their own, so
+// that two cores share them; tests/CMakeLists.txt, SHARDS).
+int run_tests(QObject& test, int argc, char** argv);
+
 }  // namespace tessera::test
+
+// A test program's main that understands `--skip` (see run_tests).
+#define TESSERA_TEST_MAIN(TestClass)                   \
+  int main(int argc, char** argv) {                    \
+    QCoreApplication app(argc, argv);                  \
+    TestClass test;                                    \
+    return tessera::test::run_tests(test, argc, argv); \
+  }

@@ -289,5 +289,5 @@ class TestContinuum : public QObject {
   }
 };
 
-QTEST_APPLESS_MAIN(TestContinuum)
+TESSERA_TEST_MAIN(TestContinuum)
 #include "test_continuum.moc"

@@ -200,5 +200,5 @@ class TestContinuum3 : public QObject {
   }
 };
 
-QTEST_APPLESS_MAIN(TestContinuum3)
+TESSERA_TEST_MAIN(TestContinuum3)
 #include "test_continuum3.moc"

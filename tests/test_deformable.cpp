@@ -229,5 +229,5 @@ class TestDeformable : public QObject {
   }
 };
 
-QTEST_APPLESS_MAIN(TestDeformable)
+TESSERA_TEST_MAIN(TestDeformable)
 #include "test_deformable.moc"
