@@ -2,6 +2,7 @@
 // vertices bit-identical), joint sets, walls, and the script's messages for 3D mistakes.
 #include <QtTest>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "support.hpp"
@@ -163,6 +164,31 @@ class TestGeneration3d : public QObject {
     }
     QCOMPARE(walls, 16 + 3 * 16);  // each rock sector's wall, and each round's 16
     QVERIFY(splits >= 2 * 16);
+  }
+
+  void joinedTunnelRockIsOneBodyPerBlock() {
+    // With 'join', the rock each block keeps around the opening is one body: a jointed region
+    // of two blocks (a joint plane across the opening's axis) gives two rock bodies, each of
+    // 16 sectors and the rock past the end, and the rounds stay blocks of their own.
+    ScriptRun r;
+    r.run(std::string(kHead) +
+          "region -5,0,-5 5,10,5 material=rock\ncrack dip=90 ddir=0 origin=0,3,0 name=J\n"
+          "tunnel circle centre=0,0,0 axis=0,1,0 radius=2 length=6 rounds=3 segments=16 "
+          "group=dig join\n");
+    const Blocks3& B = r.model().blocks3;
+    std::map<int32_t, int> pieces;
+    for (size_t b = 0; b < B.size(); ++b) ++pieces[B.master[b]];
+    std::vector<int> sizes;
+    for (const auto& [master, n] : pieces) sizes.push_back(n);
+    std::sort(sizes.begin(), sizes.end());
+    // Rounds: 1 + 2 pieces (round 2 crosses the joint), the two rock bodies: 16 and 16 + 16 + 1.
+    QCOMPARE(sizes, (std::vector<int>{1, 1, 1, 1, 16, 33}));
+    QVERIFY(std::abs(total_volume(r.model()) - 1000.0) < 1e-9 * 1000.0);
+    // Without a density the rock cannot be joined: refused before anything is cut.
+    QVERIFY(error_of(std::string(kHead) + "region 0,0,0 4,4,4\n"
+                                          "tunnel circle centre=2,0,2 axis=0,1,0 radius=1 "
+                                          "length=4 join\n")
+                .find("has no density") != std::string::npos);
   }
 
   void aTunnelThroughJointedRockAddsUpAndRuns() {

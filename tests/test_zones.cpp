@@ -299,6 +299,67 @@ class TestZones : public QObject {
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(open, h));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(block, 0.0));
   }
+
+  // A joined body (one 2 x 1 x 1 box on two unit boxes: the big one's bottom face meets both
+  // small ones', a T where their shared face ends on it) as one conforming mesh: every zone in
+  // one piece, each piece's zones filling its volume, nodes shared across the faces between
+  // pieces (each face's zone faces on one side are the other side's), every piece's corners
+  // nodes, the same mesh every time.
+  void piecesMeshAsOneBody() {
+    const std::vector<Polyhedron> pieces{box(Vec3(0, 0, 0), Vec3(1, 1, 1)),
+                                         box(Vec3(1, 0, 0), Vec3(2, 1, 1)),
+                                         box(Vec3(0, 0, 1), Vec3(2, 1, 2))};
+    const double h = 0.3;
+    const ZoneMesh3 m = zone_pieces(pieces, h);
+    QCOMPARE(m.piece.size(), m.tets.size());
+    std::array<double, 3> volume{};
+    for (size_t z = 0; z < m.tets.size(); ++z) {
+      const auto& t = m.tets[z];
+      const std::array<Vec3, 4> p{m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]};
+      const double v = (p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) / 6.0;
+      QVERIFY(v > 0);
+      QVERIFY(m.piece[z] < 3);
+      QVERIFY(z == 0 || m.piece[z - 1] <= m.piece[z]);  // sorted by piece
+      volume[m.piece[z]] += v;
+      // The zone lies in its piece.
+      const Vec3 c = (p[0] + p[1] + p[2] + p[3]) / 4.0;
+      const Vec3 lo = pieces[m.piece[z]].vertices[0], hi = pieces[m.piece[z]].vertices[7];
+      QVERIFY((c.array() > lo.array()).all() && (c.array() < hi.array()).all());
+    }
+    qInfo("%zu tetrahedra, %zu nodes, smallest dihedral %.1f degrees; volumes %.12f %.12f %.12f",
+          m.tets.size(), m.nodes.size(), m.min_dihedral, volume[0], volume[1], volume[2]);
+    QVERIFY(std::abs(volume[0] - 1) < 1e-9 && std::abs(volume[1] - 1) < 1e-9 &&
+            std::abs(volume[2] - 2) < 1e-9);
+    QVERIFY(m.min_dihedral >= 5.0);
+    for (const Polyhedron& p : pieces)
+      for (const Vec3& corner : p.vertices)
+        QVERIFY(std::any_of(m.nodes.begin(), m.nodes.end(),
+                            [&](const Vec3& n) { return (n - corner).norm() < 1e-9; }));
+    // Zone faces on z = 1 seen from below and from above are the same triangles (conforming):
+    // the faces of the pieces' zones there, as sorted node triples.
+    const auto faces_on_z1 = [&](bool upper) {
+      static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+      std::vector<std::array<uint32_t, 3>> out;
+      for (size_t z = 0; z < m.tets.size(); ++z) {
+        if ((m.piece[z] == 2) != upper) continue;
+        for (const auto& f : kFace) {
+          std::array<uint32_t, 3> tri{m.tets[z][f[0]], m.tets[z][f[1]], m.tets[z][f[2]]};
+          if (std::all_of(tri.begin(), tri.end(),
+                          [&](uint32_t n) { return std::abs(m.nodes[n].z() - 1) < 1e-9; })) {
+            std::sort(tri.begin(), tri.end());
+            out.push_back(tri);
+          }
+        }
+      }
+      std::sort(out.begin(), out.end());
+      return out;
+    };
+    const auto below = faces_on_z1(false), above = faces_on_z1(true);
+    QVERIFY(below.size() >= 2 * 2 / (h * h));
+    QVERIFY(below == above);
+    const ZoneMesh3 again = zone_pieces(pieces, h);
+    QVERIFY(again.nodes == m.nodes && again.tets == m.tets && again.piece == m.piece);
+  }
 };
 
 QTEST_APPLESS_MAIN(TestZones)

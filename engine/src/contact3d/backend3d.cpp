@@ -182,7 +182,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   });
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b)
-      if (B.is_slave(b)) B.update_world(b);
+      if (B.is_slave(b) && !B.deformable[b]) B.update_world(b);  // (zoned: moved by nodes)
   });
 }
 

@@ -40,9 +40,11 @@ std::vector<CutBlock> cut_input3(const Model& m, const std::vector<size_t>& sele
 }
 
 // Replaces each block cut into more than one piece by its pieces (a piece labelled L joins
-// group label_group[L]); returns the number of blocks added.
+// group label_group[L]); returns the number of blocks added. With `rock`, the unlabelled pieces
+// of each block cut: their new block indices, one list per block.
 size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vector<CutBlock>& pieces,
-                    const std::vector<int>& label_group) {
+                    const std::vector<int>& label_group,
+                    std::vector<std::vector<size_t>>* rock = nullptr) {
   Blocks3& B = m.blocks3;
   const auto group_of = [&](const CutBlock& p, int parent_group) {
     return p.label >= 0 ? label_group[static_cast<size_t>(p.label)] : parent_group;
@@ -69,6 +71,10 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
     B.fixity[b] = old.fixity[parent];
     B.fixed_v[b] = old.fixed_v[parent], B.fixed_w[b] = old.fixed_w[parent];
     B.body[b].velocity = old.body[parent].velocity;
+    if (rock && p.label < 0) {
+      if (rock->size() <= p.parent) rock->resize(owner.size());
+      (*rock)[p.parent].push_back(b);
+    }
     ++added;
   }
   // Histories of cut blocks end; contacts are found afresh.
@@ -92,10 +98,26 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
 }
 
 size_t tunnel_model3(Model& m, const std::vector<size_t>& selection, const Opening3& o,
-                     const std::vector<int>& round_groups) {
+                     const std::vector<int>& round_groups, bool join) {
   std::vector<size_t> owner;
   const std::vector<CutBlock> input = cut_input3(m, selection, owner);
-  return replace_cut3(m, owner, cut_opening(input, o), round_groups);
+  const std::vector<CutBlock> pieces = cut_opening(input, o);
+  // Joining needs each body's mass: refused before anything is cut.
+  std::vector<size_t> rock_count(owner.size(), 0);
+  for (const CutBlock& p : pieces) rock_count[p.parent] += p.label < 0;
+  for (size_t i = 0; join && i < owner.size(); ++i) {
+    const int k = m.blocks3.material[owner[i]];
+    if (rock_count[i] > 1 && !(k >= 0 && m.materials[static_cast<size_t>(k)].density > 0.0))
+      throw std::invalid_argument("block " + std::to_string(m.blocks3.id[owner[i]]) +
+                                  " has no density: give it a material before joining its rock");
+  }
+  std::vector<std::vector<size_t>> rock;
+  const size_t added = replace_cut3(m, owner, pieces, round_groups, &rock);
+  // The rock each block keeps around the opening, one body again (no fictitious joints).
+  if (join)
+    for (const std::vector<size_t>& body : rock)
+      if (body.size() > 1) join_blocks3(m, body);
+  return added;
 }
 
 void add_wall3(Model& m, const WallSpec3& w) {

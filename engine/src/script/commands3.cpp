@@ -145,6 +145,9 @@ void Interpreter::cmd_tunnel3(Args& a) {
     fail("'" + shape + "' is not an opening shape of 3D models (circle or horseshoe)" +
          suggest(shape, {"circle", "horseshoe"}));
   const std::string what = "'tunnel " + shape + "'";
+  const auto flag = std::find(a.words.begin(), a.words.end(), "join");
+  const bool join = flag != a.words.end();
+  if (join) a.words.erase(flag);
   Opening3 o;
   std::string v;
   if (!take(a, "centre", v))
@@ -192,7 +195,11 @@ void Interpreter::cmd_tunnel3(Args& a) {
   o.wall_tag = joint_tag(model_, name);
   o.split_tag = joint_tag(model_, "split");
   const size_t before = model_.blocks3.size();
-  tunnel_model3(model_, sel, o, groups);
+  try {
+    tunnel_model3(model_, sel, o, groups, join);
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
   std::vector<size_t> count(groups.size(), 0);
   for (size_t b = 0; b < model_.blocks3.size(); ++b)
     for (size_t r = 0; r < groups.size(); ++r) count[r] += model_.blocks3.group[b] == groups[r];
@@ -203,10 +210,14 @@ void Interpreter::cmd_tunnel3(Args& a) {
     fail("the opening reaches no block");
   log("tunnel " + name + ": " + std::to_string(before) + " -> " +
       std::to_string(model_.blocks3.size()) + " blocks; to excavate: " + rounds_text);
-  log("tunnel: the rock around the opening is split by planes through its axis and across it at "
-      "the portal and the end, a joint named 'split' (blocks are convex); give it properties "
-      "that keep it shut, e.g. 'joint assign NAME joints=split' with a high tensile strength "
-      "and cohesion");
+  if (join)
+    log("tunnel: the rock each block keeps around the opening is one body again (joined; zoned as "
+        "one mesh)");
+  else
+    log("tunnel: the rock around the opening is split by planes through its axis and across it "
+        "at the portal and the end, a joint named 'split' (blocks are convex); give it properties "
+        "that keep it shut, e.g. 'joint assign NAME joints=split' with a high tensile strength "
+        "and cohesion, or add 'join' to keep each block's rock one body");
   overlap_checked_ = false;
 }
 

@@ -10,26 +10,28 @@
 
 namespace tessera {
 
-double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading) {
-  Blocks3& B = m.blocks3;
-  if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
-  if (B.master[b] != static_cast<int32_t>(b) ||
-      std::count(B.master.begin(), B.master.end(), static_cast<int32_t>(b)) > 1)
-    throw std::invalid_argument(
-        "it is a piece of a joined (concave) body, which cannot be zoned yet: zone convex blocks");
-  const int mat = B.material[b];
-  if (mat < 0 || m.materials[static_cast<size_t>(mat)].zone.model.empty())
-    throw std::invalid_argument(
-        "its material has no elastic constants (give E and nu, or K and G, on 'material "
-        "define')");
-  sync_zone_materials(m);
-  const Polyhedron poly = B.polyhedron(b);
-  const ZoneMesh3 mesh = zone_polyhedron(poly, max_edge, 2000000, grading);
-  Continuum3& c = m.continuum3;
-  const uint32_t first = add_mesh(c, mesh, static_cast<uint32_t>(mat + 1));
-  B.node_begin[b] = first, B.node_end[b] = static_cast<uint32_t>(c.node_count());
-  B.zone_end[b] = static_cast<uint32_t>(c.zone_count());
-  B.zone_begin[b] = B.zone_end[b] - static_cast<uint32_t>(mesh.tets.size());
+namespace {
+
+// Block b's face triangles: `on_face[f - first face]` for each of its faces, spliced into the
+// face-ordered list of every block's surface triangles.
+void set_face_triangles(Blocks3& B, size_t b,
+                        const std::vector<std::vector<std::array<uint32_t, 3>>>& on_face) {
+  const uint32_t f0 = B.face_begin[b], f1 = B.face_begin[b + 1];
+  std::vector<std::array<uint32_t, 3>> tris(B.ftri.begin(), B.ftri.begin() + B.ftri_begin[f0]);
+  std::vector<uint32_t> begin(B.ftri_begin.begin(), B.ftri_begin.begin() + f0 + 1);
+  for (uint32_t f = f0; f < f1; ++f) {
+    tris.insert(tris.end(), on_face[f - f0].begin(), on_face[f - f0].end());
+    begin.push_back(static_cast<uint32_t>(tris.size()));
+  }
+  const uint32_t shift = static_cast<uint32_t>(tris.size()) - B.ftri_begin[f1];
+  tris.insert(tris.end(), B.ftri.begin() + B.ftri_begin[f1], B.ftri.end());
+  for (size_t f = f1 + 1; f < B.ftri_begin.size(); ++f) begin.push_back(B.ftri_begin[f] + shift);
+  B.ftri = std::move(tris), B.ftri_begin = std::move(begin);
+}
+
+// Makes block b (piece `piece` of the mesh, whose nodes start at `first`) deformable: its
+// corners become the nodes there, its faces the surface triangles of its own zones.
+void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, uint32_t first) {
   // Each corner is a node of the mesh (the mesher protects the block's edges).
   const double eps = 1e-9 * B.bound_radius[b];
   for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
@@ -40,10 +42,14 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
     if (d > 1e3 * eps) throw std::invalid_argument("the mesher moved a corner of the block");
     B.vertex_node[v] = static_cast<int32_t>(first + best);
   }
-  // Each surface triangle on the face whose plane it lies in and whose normal it shares.
+  // The piece's own zones, and each of their surface triangles on the face whose plane it lies in
+  // and whose normal it shares.
+  ZoneMesh3 own;
+  for (size_t z = 0; z < mesh.tets.size(); ++z)
+    if (mesh.piece.empty() || mesh.piece[z] == piece) own.tets.push_back(mesh.tets[z]);
   const uint32_t f0 = B.face_begin[b], f1 = B.face_begin[b + 1];
   std::vector<std::vector<std::array<uint32_t, 3>>> on_face(f1 - f0);
-  for (const auto& t : boundary_faces(mesh)) {
+  for (const auto& t : boundary_faces(own)) {
     const Vec3 n = (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
     uint32_t face = f1;
     for (uint32_t f = f0; f < f1 && face == f1; ++f) {
@@ -56,22 +62,56 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
     if (face == f1) throw std::invalid_argument("a surface triangle of its zones lies on no face");
     on_face[face - f0].push_back({first + t[0], first + t[1], first + t[2]});
   }
-  // Splice them into the face-ordered list of every block's surface triangles.
-  std::vector<std::array<uint32_t, 3>> tris(B.ftri.begin(), B.ftri.begin() + B.ftri_begin[f0]);
-  std::vector<uint32_t> begin(B.ftri_begin.begin(), B.ftri_begin.begin() + f0 + 1);
-  for (uint32_t f = f0; f < f1; ++f) {
-    tris.insert(tris.end(), on_face[f - f0].begin(), on_face[f - f0].end());
-    begin.push_back(static_cast<uint32_t>(tris.size()));
-  }
-  const uint32_t shift = static_cast<uint32_t>(tris.size()) - B.ftri_begin[f1];
-  tris.insert(tris.end(), B.ftri.begin() + B.ftri_begin[f1], B.ftri.end());
-  for (size_t f = f1 + 1; f < B.ftri_begin.size(); ++f) begin.push_back(B.ftri_begin[f] + shift);
-  B.ftri = std::move(tris), B.ftri_begin = std::move(begin);
+  set_face_triangles(B, b, on_face);
   // The body's motion is replaced by the nodes'.
   B.deformable[b] = 1;
   B.fixity[b] = kFix3All;
   B.body[b].velocity = B.body[b].momentum = Vec3::Zero();
   B.fixed_v[b] = B.fixed_w[b] = B.omega[b] = Vec3::Zero();
+}
+
+}  // namespace
+
+double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading) {
+  Blocks3& B = m.blocks3;
+  if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  // The body's pieces (one for a convex block), in block order: one mesh for all of them.
+  std::vector<size_t> pieces;
+  for (size_t k = 0; k < B.size(); ++k)
+    if (B.master[k] == B.master[b]) pieces.push_back(k);
+  for (size_t k : pieces) {
+    const int mat = B.material[k];
+    if (mat < 0 || m.materials[static_cast<size_t>(mat)].zone.model.empty())
+      throw std::invalid_argument(
+          (pieces.size() > 1 ? "the material of its piece, block " + std::to_string(B.id[k]) + ","
+                             : std::string("its material")) +
+          " has no elastic constants (give E and nu, or K and G, on 'material define')");
+  }
+  sync_zone_materials(m);
+  ZoneMesh3 mesh;
+  if (pieces.size() == 1) {
+    mesh = zone_polyhedron(B.polyhedron(b), max_edge, 2000000, grading);
+  } else {
+    std::vector<Polyhedron> polys;
+    for (size_t k : pieces) polys.push_back(B.polyhedron(k));
+    mesh = zone_pieces(polys, max_edge, 2000000, grading);
+  }
+  Continuum3& c = m.continuum3;
+  const auto zone0 = static_cast<uint32_t>(c.zone_count());
+  const uint32_t first = add_mesh(c, mesh, 0);
+  // Each piece: its material, its zones (contiguous: sorted by piece), the body's nodes.
+  for (uint32_t i = 0; i < pieces.size(); ++i) {
+    const size_t k = pieces[i];
+    B.node_begin[k] = first, B.node_end[k] = static_cast<uint32_t>(c.node_count());
+    B.zone_begin[k] = B.zone_end[k] = zone0;
+    for (uint32_t z = 0; z < mesh.tets.size(); ++z) {
+      if (mesh.piece[z] != i) continue;
+      if (B.zone_end[k] == zone0) B.zone_begin[k] = zone0 + z;
+      B.zone_end[k] = zone0 + z + 1;
+      c.material[zone0 + z] = static_cast<uint32_t>(B.material[k] + 1);
+    }
+    attach_piece(B, k, mesh, i, first);
+  }
   lump_masses(c);
   m.contacts3.clear();
   m.block_contact_begin.clear();
@@ -141,13 +181,6 @@ std::vector<double> node_timesteps3(const Model& m) {
     if (share[n] > 0 && c.mass[n] > 0)
       dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (kmax * share[n])));
   return dt;
-}
-
-int node_block3(const Model& m, size_t n) {
-  const Blocks3& B = m.blocks3;
-  for (size_t b = 0; b < B.size(); ++b)
-    if (B.deformable[b] && n >= B.node_begin[b] && n < B.node_end[b]) return static_cast<int>(b);
-  return -1;
 }
 
 void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {

@@ -2,8 +2,10 @@
 #include "tessera/zones/zoning3.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_domain_with_polyline_features_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -14,8 +16,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -25,27 +29,214 @@ namespace tessera {
 namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Surface = CGAL::Surface_mesh<K::Point_3>;
+// One block: its surface, edges protected.
 using Domain = CGAL::Polyhedral_mesh_domain_with_features_3<K, Surface>;
-using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
-using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
-using Criteria = CGAL::Mesh_criteria_3<Tr>;
+// A joined body: each point labelled with the piece holding it, every piece's edges protected.
+using PieceDomain = CGAL::Mesh_domain_with_polyline_features_3<CGAL::Labeled_mesh_domain_3<K>>;
 
 Vec3 vec(const K::Point_3& p) {
   return {p.x(), p.y(), p.z()};
 }
+K::Point_3 point3(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 // The mesher's size field: the grading's size at a point, or the uniform size.
+template <class Index>
 struct SizeField {
   double max_edge;
   const ZoneGrading3* grading;
   double factor;  // the bound as a multiple of the edge length
   using FT = K::FT;
   using Point_3 = K::Point_3;
-  using Index = Domain::Index;
   FT operator()(const Point_3& p, int, const Index&) const {
     return factor * (grading ? grading->size_at(vec(p), max_edge) : max_edge);
   }
 };
+
+// Refuses a size that would make more than `max_zones` zones in `volume`, or an edge far shorter
+// than the zones (the mesher would refine without end); returns the smallest zone size.
+double check_sizes(const std::vector<const Polyhedron*>& pieces, double volume, double max_edge,
+                   size_t max_zones, const ZoneGrading3* grading) {
+  // A regular tetrahedron of edge h holds h^3 / (6 sqrt 2); refined meshes hold about as many.
+  // Graded, the mean of 1 / h^3 over a grid across the pieces' box stands for the volume's.
+  const double smallest = grading ? std::min(max_edge, grading->fine_edge) : max_edge;
+  double per_volume = 1.0 / (smallest * smallest * smallest);
+  if (grading) {
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const Polyhedron* block : pieces)
+      for (const Vec3& v : block->vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    constexpr int kGrid = 24;
+    double sum = 0.0;
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j)
+        for (int k = 0; k < kGrid; ++k) {
+          const Vec3 t = (Vec3(i, j, k) + Vec3::Constant(0.5)) / kGrid;
+          const double h = grading->size_at(lo + t.cwiseProduct(hi - lo), max_edge);
+          sum += 1.0 / (h * h * h);
+        }
+    per_volume = sum / (kGrid * kGrid * kGrid);
+  }
+  if (volume * per_volume * 6 * std::numbers::sqrt2 > static_cast<double>(max_zones))
+    throw std::invalid_argument("zones of size " + std::to_string(smallest) +
+                                " would make more than " + std::to_string(max_zones) +
+                                " zones; use a larger size");
+  for (const Polyhedron* block : pieces)
+    for (const auto& face : block->faces)
+      for (size_t k = 0; k < face.size(); ++k) {
+        const double length =
+            (block->vertices[face[k]] - block->vertices[face[(k + 1) % face.size()]]).norm();
+        if (length < 1e-6 * smallest) {
+          char why[160];
+          std::snprintf(why, sizeof why,
+                        "the block has an edge %.3g m long, too short to zone at size %.3g", length,
+                        smallest);
+          throw std::invalid_argument(why);
+        }
+      }
+  return smallest;
+}
+
+// Every piece's edges once, split at the corners of other pieces lying on them and where two
+// edges cross inside both, so that the segments (the mesher's features) meet only at their ends.
+// Corners within `tol` are one.
+std::vector<std::array<Vec3, 2>> feature_segments(const std::vector<Polyhedron>& pieces,
+                                                  double tol) {
+  std::vector<Vec3> pts;
+  const auto weld = [&](const Vec3& p) {
+    for (size_t i = 0; i < pts.size(); ++i)
+      if ((pts[i] - p).norm() <= tol) return static_cast<uint32_t>(i);
+    pts.push_back(p);
+    return static_cast<uint32_t>(pts.size() - 1);
+  };
+  std::set<std::pair<uint32_t, uint32_t>> edges;
+  for (const Polyhedron& p : pieces)
+    for (const auto& f : p.faces)
+      for (size_t k = 0; k < f.size(); ++k) {
+        const uint32_t a = weld(p.vertices[f[k]]), b = weld(p.vertices[f[(k + 1) % f.size()]]);
+        if (a != b) edges.insert(std::minmax(a, b));
+      }
+  const std::vector<std::pair<uint32_t, uint32_t>> list(edges.begin(), edges.end());
+  // Crossings: the closest points of two segments, inside both and within tol of each other.
+  for (size_t i = 0; i < list.size(); ++i)
+    for (size_t j = i + 1; j < list.size(); ++j) {
+      const auto [a, b] = list[i];
+      const auto [c, d] = list[j];
+      if (a == c || a == d || b == c || b == d) continue;
+      const Vec3 u = pts[b] - pts[a], v = pts[d] - pts[c], w = pts[a] - pts[c];
+      const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), den = uu * vv - uv * uv;
+      if (den <= 1e-12 * uu * vv) continue;  // parallel: corners on edges settle these
+      const double s = (uv * v.dot(w) - vv * u.dot(w)) / den,
+                   t = (uu * v.dot(w) - uv * u.dot(w)) / den;
+      if (s <= 0.0 || s >= 1.0 || t <= 0.0 || t >= 1.0) continue;
+      const Vec3 x = pts[a] + s * u;
+      if ((x - (pts[c] + t * v)).norm() <= tol) weld(x);
+    }
+  // Each edge split at the corners on it, in order along it.
+  std::set<std::pair<uint32_t, uint32_t>> split;
+  for (const auto& [a, b] : list) {
+    const Vec3 d = pts[b] - pts[a];
+    std::vector<std::pair<double, uint32_t>> on{{0.0, a}, {1.0, b}};
+    for (size_t v = 0; v < pts.size(); ++v) {
+      if (v == a || v == b) continue;
+      const double t = (pts[v] - pts[a]).dot(d) / d.squaredNorm();
+      if (t > 0.0 && t < 1.0 && (pts[a] + t * d - pts[v]).norm() <= tol)
+        on.emplace_back(t, static_cast<uint32_t>(v));
+    }
+    std::sort(on.begin(), on.end());
+    for (size_t k = 0; k + 1 < on.size(); ++k)
+      if (on[k].second != on[k + 1].second)
+        split.insert(std::minmax(on[k].second, on[k + 1].second));
+  }
+  std::vector<std::array<Vec3, 2>> out;
+  for (const auto& [a, b] : split) out.push_back({pts[a], pts[b]});
+  return out;
+}
+
+// Runs the mesher with the project's criteria on a domain whose features are added. With
+// `graded_distance`, surface triangles lie within a tenth of the local zone size of the surface
+// (else of the largest): a joined body's faces between pieces are resolved wherever zones are
+// fine, not only where they are coarse.
+template <class C3t3, class D>
+C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
+            bool graded_distance = false) {
+  using Tr = typename C3t3::Triangulation;
+  using Criteria = CGAL::Mesh_criteria_3<Tr>;
+  using Field = SizeField<typename D::Index>;
+  // Sizes: the block's edges split into pieces of at most the size; surface triangles and zones
+  // bounded by the circumradius of the equilateral triangle and the regular tetrahedron of that
+  // edge (h / sqrt 3, h sqrt(3/8)), so that zones of a regular shape have edges of about h.
+  const Field edge{max_edge, grading, 1.0}, facet{max_edge, grading, 1.0 / std::sqrt(3.0)},
+      cell{max_edge, grading, std::sqrt(3.0 / 8.0)};
+  namespace params = CGAL::parameters;
+  const auto run = [&](const Criteria& criteria) {
+    // The perturber draws from CGAL's default generator: seeded here, the same block gives the
+    // same mesh whatever ran before on this thread. It runs while its steps succeed: CGAL's
+    // default stops it after as much CPU time as the refinement took, so a busy machine meshed
+    // the same block differently (1659 zones against 1656).
+    CGAL::get_default_random() = CGAL::Random(0);
+    return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
+                                   params::perturb(params::time_limit = 0), params::no_exude());
+  };
+  if (!graded_distance)
+    return run(Criteria(params::edge_size = edge, params::facet_angle = 25.0,
+                        params::facet_size = facet, params::facet_distance = 0.1 * max_edge,
+                        params::cell_radius_edge_ratio = 2.0, params::cell_size = cell));
+  // Between pieces, a surface triangle's corners must lie on one face (else, with all three on
+  // some face, it may cut across a thin piece).
+  const Field distance{max_edge, grading, 0.1};
+  return run(Criteria(params::edge_size = edge, params::facet_angle = 25.0,
+                      params::facet_size = facet, params::facet_distance = distance,
+                      params::facet_topology = CGAL::FACET_VERTICES_ON_SAME_SURFACE_PATCH,
+                      params::cell_radius_edge_ratio = 2.0, params::cell_size = cell));
+}
+
+// Cells of the mesh as zones, each with its piece (0 for one block). The mesher's cells come in
+// an order that depends on memory addresses, its vertices not: nodes are numbered in coordinate
+// order and zones sorted (by piece, then nodes), so the numbering is the same on every run.
+// Each zone lists its nodes ascending, the last two swapped for positive volume.
+template <class C3t3>
+ZoneMesh3 zones_of(const C3t3& c3t3,
+                   const std::vector<std::pair<uint32_t, typename C3t3::Cell_handle>>& cells) {
+  using Vertex = typename C3t3::Triangulation::Vertex_handle;
+  std::vector<Vertex> used;
+  for (const auto& pc : cells)
+    for (int k = 0; k < 4; ++k) used.push_back(pc.second->vertex(k));
+  auto point = [](const Vertex& v) { return vec(v->point().point()); };
+  auto before = [&](const Vertex& a, const Vertex& b) {
+    const Vec3 p = point(a), q = point(b);
+    return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+  };
+  std::sort(used.begin(), used.end(), before);
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  ZoneMesh3 mesh;
+  std::map<Vertex, uint32_t> number;
+  for (const Vertex& v : used) {
+    number.emplace(v, static_cast<uint32_t>(mesh.nodes.size()));
+    mesh.nodes.push_back(point(v));
+    mesh.on_boundary.push_back(c3t3.in_dimension(v) < 3);
+  }
+  mesh.min_dihedral = 180.0;
+  std::vector<std::pair<uint32_t, std::array<uint32_t, 4>>> tets;
+  for (const auto& [piece, c] : cells) {
+    std::array<uint32_t, 4> tet;
+    for (int k = 0; k < 4; ++k) tet[k] = number.at(c->vertex(k));
+    std::sort(tet.begin(), tet.end());
+    std::array<Vec3, 4> at;
+    for (int k = 0; k < 4; ++k) at[k] = mesh.nodes[tet[k]];
+    if ((at[1] - at[0]).cross(at[2] - at[0]).dot(at[3] - at[0]) < 0)
+      std::swap(tet[2], tet[3]), std::swap(at[2], at[3]);
+    tets.emplace_back(piece, tet);
+    mesh.min_dihedral = std::min(mesh.min_dihedral, min_dihedral_angle(at));
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        mesh.max_edge = std::max(mesh.max_edge, (at[i] - at[j]).norm());
+  }
+  std::sort(tets.begin(), tets.end());
+  for (const auto& [p, t] : tets) mesh.piece.push_back(p), mesh.tets.push_back(t);
+  if (mesh.tets.empty()) throw std::invalid_argument("the block is too thin to zone");
+  return mesh;
+}
 
 // The block's surface, its faces fanned into triangles.
 Surface surface_of(const Polyhedron& block) {
@@ -88,28 +279,8 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
   if (!CGAL::is_closed(surface)) throw std::invalid_argument("the block's surface is not closed");
   const double volume = CGAL::Polygon_mesh_processing::volume(surface);
   if (!(volume > 0)) throw std::invalid_argument("the block's faces are turned inside out");
-  // A regular tetrahedron of edge h holds h^3 / (6 sqrt 2); refined meshes hold about as many.
-  const double smallest = grading ? std::min(max_edge, grading->fine_edge) : max_edge;
-  if (volume / (smallest * smallest * smallest / (6 * std::numbers::sqrt2)) >
-      static_cast<double>(max_zones))
-    throw std::invalid_argument("zones of size " + std::to_string(smallest) +
-                                " would make more than " + std::to_string(max_zones) +
-                                " zones; use a larger size");
-  // The block's edges are protected, so the faces and corners are kept as they are; an edge far
-  // shorter than the zones would make the mesher refine without end.
-  for (const auto& face : block.faces)
-    for (size_t k = 0; k < face.size(); ++k) {
-      const double length =
-          (block.vertices[face[k]] - block.vertices[face[(k + 1) % face.size()]]).norm();
-      if (length < 1e-6 * smallest) {
-        char why[160];
-        std::snprintf(why, sizeof why,
-                      "the block has an edge %.3g m long, too short to zone at "
-                      "size %.3g",
-                      length, smallest);
-        throw std::invalid_argument(why);
-      }
-    }
+  check_sizes({&block}, volume, max_edge, max_zones, grading);
+  // The block's edges are protected, so the faces and corners are kept as they are.
   CGAL::Random rng(0);
   Domain domain(surface, &rng);
   std::vector<std::vector<K::Point_3>> edges;
@@ -117,65 +288,103 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
     for (size_t k = 0; k < face.size(); ++k) {
       const uint32_t a = face[k], b = face[(k + 1) % face.size()];
       if (a >= b) continue;  // each edge once (the other face lists it as b -> a)
-      const Vec3 &pa = block.vertices[a], &pb = block.vertices[b];
-      edges.push_back({K::Point_3(pa.x(), pa.y(), pa.z()), K::Point_3(pb.x(), pb.y(), pb.z())});
+      edges.push_back({point3(block.vertices[a]), point3(block.vertices[b])});
     }
   domain.add_features(edges.begin(), edges.end());
-  // Sizes: the block's edges split into pieces of at most the size; surface triangles and zones
-  // bounded by the circumradius of the equilateral triangle and the regular tetrahedron of that
-  // edge (h / sqrt 3, h sqrt(3/8)), so that zones of a regular shape have edges of about h.
-  const SizeField edge{max_edge, grading, 1.0}, facet{max_edge, grading, 1.0 / std::sqrt(3.0)},
-      cell{max_edge, grading, std::sqrt(3.0 / 8.0)};
-  namespace params = CGAL::parameters;
-  const Criteria criteria(params::edge_size = edge, params::facet_angle = 25.0,
-                          params::facet_size = facet, params::facet_distance = 0.1 * max_edge,
-                          params::cell_radius_edge_ratio = 2.0, params::cell_size = cell);
-  // The perturber draws from CGAL's default generator: seeded here, the same block gives the
-  // same mesh whatever ran before on this thread. It runs while its steps succeed: CGAL's
-  // default stops it after as much CPU time as the refinement took, so a busy machine meshed
-  // the same block differently (1659 zones against 1656).
-  CGAL::get_default_random() = CGAL::Random(0);
-  const C3t3 c3t3 =
-      CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
-                              params::perturb(params::time_limit = 0), params::no_exude());
-  // The mesher's cells come in an order that depends on memory addresses, its vertices not:
-  // nodes are numbered in coordinate order and zones sorted, so the numbering is the same on
-  // every run. Each zone lists its nodes ascending, the last two swapped for positive volume.
-  std::vector<Tr::Vertex_handle> used;
+  using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using C3t3 =
+      CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
+  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading);
+  std::vector<std::pair<uint32_t, C3t3::Cell_handle>> cells;
   for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
-    for (int k = 0; k < 4; ++k) used.push_back(c->vertex(k));
-  auto point = [](const Tr::Vertex_handle& v) { return vec(v->point().point()); };
-  auto before = [&](const Tr::Vertex_handle& a, const Tr::Vertex_handle& b) {
-    const Vec3 p = point(a), q = point(b);
-    return std::tie(p.x(), p.y(), p.z()) < std::tie(q.x(), q.y(), q.z());
+    cells.emplace_back(0, c);
+  return zones_of(c3t3, cells);
+}
+
+ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge, size_t max_zones,
+                      const ZoneGrading3* grading) {
+  if (!(max_edge > 0)) throw std::invalid_argument("the zone size must be positive");
+  if (pieces.empty()) throw std::invalid_argument("no pieces to zone");
+  // Each piece's faces as half-spaces (the pieces are convex), and the body's box.
+  struct Half {
+    Vec3 n;
+    double d;
   };
-  std::sort(used.begin(), used.end(), before);
-  used.erase(std::unique(used.begin(), used.end()), used.end());
-  ZoneMesh3 mesh;
-  std::map<Tr::Vertex_handle, uint32_t> number;
-  for (const Tr::Vertex_handle& v : used) {
-    number.emplace(v, static_cast<uint32_t>(mesh.nodes.size()));
-    mesh.nodes.push_back(point(v));
-    mesh.on_boundary.push_back(c3t3.in_dimension(v) < 3);
+  std::vector<std::vector<Half>> halves(pieces.size());
+  std::vector<std::pair<Vec3, Vec3>> boxes;
+  std::vector<const Polyhedron*> all;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  double volume = 0.0;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const Polyhedron& p = pieces[i];
+    volume += solid_properties(p).volume;
+    Vec3 plo = Vec3::Constant(1e300), phi = Vec3::Constant(-1e300);
+    for (const Vec3& v : p.vertices) plo = plo.cwiseMin(v), phi = phi.cwiseMax(v);
+    boxes.emplace_back(plo, phi);
+    lo = lo.cwiseMin(plo), hi = hi.cwiseMax(phi);
+    for (const auto& f : p.faces) {
+      const Vec3 n = newell_normal(p.vertices, f);
+      double d = -1e300;
+      for (uint32_t k : f) d = std::max(d, n.dot(p.vertices[k]));
+      halves[i].push_back({n, d});
+    }
+    all.push_back(&p);
   }
-  mesh.min_dihedral = 180.0;
-  for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    std::array<uint32_t, 4> tet;
-    for (int k = 0; k < 4; ++k) tet[k] = number.at(c->vertex(k));
-    std::sort(tet.begin(), tet.end());
+  check_sizes(all, volume, max_edge, max_zones, grading);
+  const double scale = (hi - lo).norm(), tol = 1e-9 * scale;
+  // The label of a point: 1 + the first piece holding it, 0 outside the body.
+  const auto label = [halves, boxes](const K::Point_3& q) {
+    const Vec3 x = vec(q);
+    for (size_t i = 0; i < halves.size(); ++i) {
+      if ((x.array() < boxes[i].first.array()).any() || (x.array() > boxes[i].second.array()).any())
+        continue;
+      bool in = true;
+      for (const Half& h : halves[i]) in = in && h.n.dot(x) <= h.d;
+      if (in) return static_cast<int>(i) + 1;
+    }
+    return 0;
+  };
+  const Vec3 blo = lo - Vec3::Constant(0.1 * scale), bhi = hi + Vec3::Constant(0.1 * scale);
+  CGAL::Random rng(0);
+  PieceDomain domain(std::function<int(const K::Point_3&)>(label),
+                     CGAL::Bbox_3(blo.x(), blo.y(), blo.z(), bhi.x(), bhi.y(), bhi.z()),
+                     K::FT(1e-10), CGAL::Null_subdomain_index(), &rng);
+  // Every piece's edges protected, split where another piece's corner or edge meets them, so the
+  // features meet only at their ends and every piece's faces and corners are kept.
+  const std::vector<std::array<Vec3, 2>> features = feature_segments(pieces, tol);
+  std::vector<std::vector<K::Point_3>> edges;
+  for (const auto& e : features) edges.push_back({point3(e[0]), point3(e[1])});
+  domain.add_features(edges.begin(), edges.end());
+  using Tr = CGAL::Mesh_triangulation_3<PieceDomain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, PieceDomain::Corner_index,
+                                                       PieceDomain::Curve_index>;
+  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading, true);
+  // A zone's piece: the one holding its centroid. The mesher labels a cell by its circumcentre,
+  // which for a sliver against a face can lie in the next piece or outside: such a sliver would
+  // be in the wrong piece or missing. A cell it left out is a zone if its centroid lies inside a
+  // piece by a hundredth of its longest edge (not a flat cell outside a face).
+  const auto depth = [&](const Vec3& x, size_t i) {
+    double d = 1e300;
+    for (const Half& h : halves[i]) d = std::min(d, h.d - h.n.dot(x));
+    return d;
+  };
+  std::vector<std::pair<uint32_t, C3t3::Cell_handle>> cells;
+  const auto& tr = c3t3.triangulation();
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
     std::array<Vec3, 4> at;
-    for (int k = 0; k < 4; ++k) at[k] = mesh.nodes[tet[k]];
-    if ((at[1] - at[0]).cross(at[2] - at[0]).dot(at[3] - at[0]) < 0)
-      std::swap(tet[2], tet[3]), std::swap(at[2], at[3]);
-    mesh.tets.push_back(tet);
-    mesh.min_dihedral = std::min(mesh.min_dihedral, min_dihedral_angle(at));
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        mesh.max_edge = std::max(mesh.max_edge, (at[i] - at[j]).norm());
+    for (int k = 0; k < 4; ++k) at[k] = vec(c->vertex(k)->point().point());
+    const Vec3 centroid = (at[0] + at[1] + at[2] + at[3]) / 4.0;
+    const int in = label(point3(centroid));
+    if (in == 0) continue;
+    if (!c3t3.is_in_complex(c)) {
+      double longest = 0.0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) longest = std::max(longest, (at[i] - at[j]).norm());
+      if (depth(centroid, static_cast<size_t>(in - 1)) < 1e-2 * longest) continue;
+    }
+    cells.emplace_back(static_cast<uint32_t>(in - 1), c);
   }
-  std::sort(mesh.tets.begin(), mesh.tets.end());
-  if (mesh.tets.empty()) throw std::invalid_argument("the block is too thin to zone");
-  return mesh;
+  return zones_of(c3t3, cells);
 }
 
 }  // namespace tessera

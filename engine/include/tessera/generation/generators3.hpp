@@ -20,10 +20,11 @@ size_t cut_model3(Model& m, const std::vector<size_t>& selection,
                   const std::vector<JointPlane>& planes);
 
 // Cuts an opening through the selected blocks (all if empty) with `cut_opening`; the pieces
-// inside round i join group round_groups[i], the rest keep their parent's group. Returns the
-// number of blocks added.
+// inside round i join group round_groups[i], the rest keep their parent's group. With `join`,
+// the rock pieces of each block cut are joined into one body (join_blocks3), so the planes that
+// keep the pieces convex are no joints. Returns the number of blocks added.
 size_t tunnel_model3(Model& m, const std::vector<size_t>& selection, const Opening3& o,
-                     const std::vector<int>& round_groups);
+                     const std::vector<int>& round_groups, bool join = false);
 
 // A running-bond wall one brick thick: courses along x stacked in z, the wall's thickness along
 // y; every second course starts with a half brick.

@@ -11,9 +11,12 @@
 namespace tessera {
 
 // Zones 3D block b (zone edges up to `max_edge`, optionally graded) and makes it deformable:
-// its corners become nodes and each face is covered by the surface triangles of its zones.
-// Returns the smallest dihedral angle of its zones (degrees). Throws std::invalid_argument if
-// its material has no elastic constants, it is deformable already or a piece of a joined body.
+// its corners become nodes and each face is covered by the surface triangles of its zones. A
+// piece of a joined (concave) body zones the whole body as one mesh that conforms across the
+// faces between its pieces (they share nodes: no joint there); each piece keeps its own zones,
+// material and face triangles, and all share the body's node range. Returns the smallest
+// dihedral angle of its zones (degrees). Throws std::invalid_argument if a material has no
+// elastic constants or the block is deformable already.
 double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading = nullptr);
 // Refreshes the corners and face planes of every deformable 3D block from its nodes.
 void update_deformable_world3(Model& m);
@@ -24,7 +27,5 @@ void add_contact_forces_to_nodes3(Model& m);
 std::vector<double> node_timesteps3(const Model& m);
 // Drops the nodes and zones of the doomed blocks (before Blocks3::remove with the same flags).
 void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed);
-// The block (index) whose zones hold node n, or -1.
-int node_block3(const Model& m, size_t n);
 
 }  // namespace tessera

@@ -20,6 +20,7 @@ struct ZoneMesh3 {
   std::vector<Vec3> nodes;
   std::vector<uint8_t> on_boundary;           // per node: lies on the block's surface
   std::vector<std::array<uint32_t, 4>> tets;  // positive volume: (b - a) x (c - a) . (d - a) > 0
+  std::vector<uint32_t> piece;                // per tet: the piece it fills (zone_pieces), or 0
   double min_dihedral = 0.0;                  // smallest dihedral angle of any zone, degrees
   double max_edge = 0.0;                      // longest zone edge
 };
@@ -33,6 +34,14 @@ struct ZoneMesh3 {
 // more than `max_zones` zones.
 ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_zones = 2000000,
                           const ZoneGrading3* grading = nullptr);
+
+// One mesh filling a body of convex pieces that touch along their faces (a joined block): the
+// zones conform across the faces between pieces (nodes shared, no joint), each zone lies in one
+// piece (`piece`, zones sorted by it), and every piece's corners are nodes and its faces are
+// covered by zone faces; otherwise as zone_polyhedron. Edges of pieces that end on another's
+// edge, or cross it, are split there.
+ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge,
+                      size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr);
 
 // Smallest dihedral angle of a tetrahedron, degrees (0 for a flat one).
 double min_dihedral_angle(const std::array<Vec3, 4>& corners);
