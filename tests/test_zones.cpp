@@ -355,7 +355,7 @@ class TestZones : public QObject {
       return out;
     };
     const auto below = faces_on_z1(false), above = faces_on_z1(true);
-    QVERIFY(below.size() >= 2 * 2 / (h * h));
+    QVERIFY(static_cast<double>(below.size()) >= 2 * 2 / (h * h));
     QVERIFY(below == above);
     const ZoneMesh3 again = zone_pieces(pieces, h);
     QVERIFY(again.nodes == m.nodes && again.tets == m.tets && again.piece == m.piece);
