@@ -16,6 +16,7 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -452,6 +453,30 @@ class TestExamples : public QObject {
     QVERIFY2(why.isEmpty(), qPrintable(why));
     QFile pvd(r.dir + "/vtk/zones.pvd");
     QVERIFY(pvd.open(QIODevice::ReadOnly) && pvd.readAll().contains("zones_0000.vtu"));
+    // The figure coloured by szz shows the zones on the column's faces: near zero (red end of
+    // the ramp) at the top, most compressive (blue end) at the foot, graded between (many ramp
+    // colours, not one per block); the rigid footing grey. Sampled left of the colour bar.
+    const QString fig = r.dir + "/column_szz.png";
+    check_figure(fig, QSize(900, 1200));
+    const QImage img(fig);
+    long red = 0, blue = 0, grey = 0;
+    double red_y = 0, blue_y = 0;
+    std::set<int> ramp;
+    for (int py = 0; py < img.height(); py += 3)
+      for (int px = 0; px < img.width() * 7 / 10; px += 3) {
+        const QColor c = img.pixelColor(px, py);
+        if (c.red() > c.blue() + 80) ++red, red_y += py;
+        if (c.blue() > c.red() + 80 && c.green() > 40) ++blue, blue_y += py;  // not a contact
+        if (c.saturation() > 120) ramp.insert(c.hue() / 10);
+        grey += c.saturation() < 10 && c.value() > 100 && c.value() < 230;
+      }
+    red_y /= static_cast<double>(std::max(red, 1L)),
+        blue_y /= static_cast<double>(std::max(blue, 1L));
+    qInfo("szz figure: %ld red pixels about y = %.0f, %ld blue about y = %.0f, %zu hues, %ld grey",
+          red, red_y, blue, blue_y, ramp.size(), grey);
+    QVERIFY(red > 1000 && blue > 1000 && grey > 5000);
+    QVERIFY(red_y + img.height() / 5 < blue_y);
+    QVERIFY(ramp.size() >= 12);
   }
   void rockWedgeStandsThenSlidesAlongTheIntersection() {
     const Run r = run_example("rock_wedge", {}, dir_);

@@ -2,6 +2,7 @@
 #include "tessera/ui/figure_writer.hpp"
 
 #include <QFileInfo>
+#include <QFontMetricsF>
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
@@ -85,8 +86,15 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   const double m = font_px;
   const QRectF title(area.left() + m, area.top() + 0.5 * m, area.width() - 2 * m, 1.6 * font_px);
   const double legend_w = std::min(area.width() * 0.22, 16 * font_px);
+  // The caption's height as wrapped to the page width (at least two lines), below the scale bar.
+  const QString caption = QString::fromStdString(s.caption);
+  const QRectF caption_box(area.left() + m, 0, area.width() - 2 * m, 1e6);
+  const double caption_h = std::max(
+      2.2 * font_px, QFontMetricsF(font, p.device())
+                         .boundingRect(caption_box, Qt::AlignLeft | Qt::TextWordWrap, caption)
+                         .height());
   QRectF plot(area.left() + m, title.bottom() + 0.5 * m, area.width() - legend_w - 3 * m,
-              area.height() - title.height() - 6.5 * m);
+              area.height() - title.height() - 3.7 * m - caption_h);
   QFont bold = font;
   bold.setBold(true);
   p.setFont(bold);
@@ -110,7 +118,9 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
     for (const auto& poly : list) {
       QPolygonF q;
       for (const Vec2& v : poly.points) q << map(v);
-      p.setPen(outline ? edge : fill ? QPen(qcolour(poly.colour), 0) : QPen(Qt::NoPen));
+      p.setPen(outline && poly.outline ? edge
+               : fill                  ? QPen(qcolour(poly.colour), 0)
+                                       : QPen(Qt::NoPen));
       p.setBrush(fill ? QBrush(qcolour(poly.colour)) : QBrush(Qt::NoBrush));
       p.drawPolygon(q);
     }
@@ -152,8 +162,8 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   p.drawLine(sb + QPointF(0, -0.3 * m), sb + QPointF(0, 0.3 * m));
   p.drawLine(sb + QPointF(k * len, -0.3 * m), sb + QPointF(k * len, 0.3 * m));
   p.drawText(sb + QPointF(k * len + 0.5 * m, 0.35 * font_px), number(len) + " m");
-  p.drawText(QRectF(area.left() + m, plot.bottom() + 2.3 * m, area.width() - 2 * m, 3 * font_px),
-             Qt::AlignLeft | Qt::TextWordWrap, QString::fromStdString(s.caption));
+  p.drawText(QRectF(area.left() + m, plot.bottom() + 2.3 * m, area.width() - 2 * m, caption_h),
+             Qt::AlignLeft | Qt::TextWordWrap, caption);
   p.restore();
 }
 

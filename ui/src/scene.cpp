@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "scene3d.hpp"
 #include "tessera/contact2d/contacts.hpp"
@@ -39,7 +40,7 @@ double block_value(const SnapshotBlock& b, ColourBy c) {
 double zone_value(const SnapshotZone& z, ColourBy c) {
   double s1 = 0, s3 = 0;
   if (c == ColourBy::kSigma1 || c == ColourBy::kSigma3)
-    principal_stresses(ZoneStress{z.sxx, z.syy, z.sxy, z.szz}, s1, s3);
+    principal_stresses(ZoneStress{z.sxx, z.syy, z.sxy, z.szz, z.syz, z.sxz}, s1, s3);
   switch (c) {
     case ColourBy::kSxx:
       return z.sxx / 1e6;
@@ -131,6 +132,13 @@ void set_range(Legend& L, ColourBy c, bool continuous, const Items& items, Value
   L.lo = lo, L.hi = hi;
 }
 
+// The caption's note on the stresses shown.
+const char* stress_note(ColourBy c) {
+  return c == ColourBy::kSigma1   ? "   stresses tension +, sigma1 most compressive"
+         : c == ColourBy::kSigma3 ? "   stresses tension +, sigma3 least compressive"
+                                  : "   stresses tension +";
+}
+
 // Zones of deformable blocks coloured by a zone quantity, with their legend.
 void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
   Legend& L = out.blocks_legend;
@@ -142,10 +150,7 @@ void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
   if (states)
     for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
   else
-    out.caption += o.colour == ColourBy::kSigma1 ? "   stresses tension +, sigma1 most compressive"
-                   : o.colour == ColourBy::kSigma3
-                       ? "   stresses tension +, sigma3 least compressive"
-                       : "   stresses tension +";
+    out.caption += stress_note(o.colour);
   for (const SnapshotZone& z : s.zones) {
     ScenePolygon p;
     p.block = z.block;
@@ -171,9 +176,31 @@ ScenePolygon block_polygon(const Snapshot& s, size_t b, double magnify, Rgb colo
 // Colours the block polygons and fills their legend.
 void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
   if (colours_zones(o.colour) && s.three) {
-    // 3D blocks have no zones: grey, as rigid blocks are in a picture of zones.
-    out.blocks_legend.title = value_title(o.colour) + " (no zones in 3D)";
-    return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out);
+    // Deformable blocks by their zones' surface triangles; rigid ones grey.
+    std::vector<SnapshotZone> drawn;
+    for (const SnapshotZone& z : s.zones)
+      if (z.block >= 0) drawn.push_back(z);
+    if (drawn.empty()) {
+      out.blocks_legend.title = value_title(o.colour) + " (no zones)";
+      return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out);
+    }
+    Legend& L = out.blocks_legend;
+    const bool states = o.colour == ColourBy::kZoneState;
+    double lo = 0, hi = 0;
+    set_range(
+        L, o.colour, !states, drawn, [&](const SnapshotZone& z) { return zone_value(z, o.colour); },
+        1e-12, lo, hi);
+    if (states)
+      for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
+    else
+      out.caption += stress_note(o.colour);
+    return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out,
+                      [&](const SnapshotZone& z) -> std::optional<Rgb> {
+                        if (z.block < 0) return std::nullopt;
+                        const double v = zone_value(z, o.colour);
+                        return states ? kStateColours[static_cast<int>(v)]
+                                      : ramp((v - lo) / (hi - lo));
+                      });
   }
   if (colours_zones(o.colour)) {
     add_zones(s, o, out);

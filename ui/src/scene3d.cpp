@@ -46,37 +46,61 @@ Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
 }
 
 void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>& colours,
-                Scene& out) {
+                Scene& out,
+                const std::function<std::optional<Rgb>(const SnapshotZone&)>& zone_colour) {
   const View view(o);
   struct Shown {
     double depth;
     ScenePolygon polygon;
   };
   std::vector<Shown> shown;
-  for (const Snapshot::Face3& f : s.faces3) {
-    const SnapshotBlock& b = s.blocks[static_cast<size_t>(f.block)];
-    const Vec3 shift = (o.magnify - 1.0) * displacement(b);
-    // Outward normal (Newell) and depth of the face.
-    Vec3 n = Vec3::Zero(), c = Vec3::Zero();
-    for (uint32_t k = f.begin; k < f.end; ++k) {
-      const Vec3& p = s.points3[k];
-      const Vec3& q = s.points3[k + 1 < f.end ? k + 1 : f.begin];
-      n += p.cross(q), c += p;
-    }
-    const double facing = n.normalized().dot(view.eye);
-    if (!(facing > 1e-9)) continue;
-    Shown v;
-    v.depth = (c / static_cast<double>(f.end - f.begin) + shift).dot(view.eye);
-    v.polygon.block = f.block;
-    for (uint32_t k = f.begin; k < f.end; ++k)
-      v.polygon.points.push_back(view(s.points3[k] + shift));
-    const Rgb base = colours[static_cast<size_t>(f.block)];
+  // Shaded by how squarely the polygon faces the viewer.
+  const auto shaded = [](Rgb base, double facing) {
     const double light = 0.6 + 0.4 * facing;
     const auto shade = [&](unsigned char x) {
       return static_cast<unsigned char>(std::lround(std::min(255.0, x * light)));
     };
-    v.polygon.colour = Rgb{shade(base.r), shade(base.g), shade(base.b)};
+    return Rgb{shade(base.r), shade(base.g), shade(base.b)};
+  };
+  // A polygon of world points if it faces the viewer.
+  const auto show = [&](const std::vector<Vec3>& pts, int block, Rgb base, bool outline) {
+    Vec3 n = Vec3::Zero(), c = Vec3::Zero();
+    for (size_t k = 0; k < pts.size(); ++k)
+      n += pts[k].cross(pts[(k + 1) % pts.size()]), c += pts[k];
+    const double facing = n.normalized().dot(view.eye);
+    if (!(facing > 1e-9)) return;
+    Shown v;
+    v.depth = (c / static_cast<double>(pts.size())).dot(view.eye);
+    v.polygon.block = block;
+    v.polygon.outline = outline;
+    for (const Vec3& p : pts) v.polygon.points.push_back(view(p));
+    v.polygon.colour = shaded(base, facing);
     shown.push_back(std::move(v));
+  };
+  // Faces of deformable blocks drawn by their zones' surface triangles (tris3 come grouped by
+  // face, in face order).
+  std::vector<uint8_t> by_zones(s.faces3.size(), 0);
+  if (zone_colour) {
+    std::vector<Vec3> tri(3);
+    for (const Snapshot::Tri3& t : s.tris3) {
+      by_zones[t.face] = 1;
+      const std::optional<Rgb> colour = zone_colour(s.zones[t.zone]);
+      if (!colour) continue;
+      for (int k = 0; k < 3; ++k)
+        tri[static_cast<size_t>(k)] =
+            s.nodes3_start[t.n[k]] + o.magnify * (s.nodes3[t.n[k]] - s.nodes3_start[t.n[k]]);
+      show(tri, s.faces3[t.face].block, *colour, false);
+    }
+  }
+  std::vector<Vec3> pts;
+  for (size_t f = 0; f < s.faces3.size(); ++f) {
+    if (by_zones[f]) continue;
+    const Snapshot::Face3& face = s.faces3[f];
+    const SnapshotBlock& b = s.blocks[static_cast<size_t>(face.block)];
+    const Vec3 shift = (o.magnify - 1.0) * displacement(b);
+    pts.clear();
+    for (uint32_t k = face.begin; k < face.end; ++k) pts.push_back(s.points3[k] + shift);
+    show(pts, face.block, colours[static_cast<size_t>(face.block)], true);
   }
   std::stable_sort(shown.begin(), shown.end(),
                    [](const Shown& p, const Shown& q) { return p.depth < q.depth; });

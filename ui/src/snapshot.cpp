@@ -143,6 +143,49 @@ void copy_stages(const std::vector<StageRecord>& stages, Snapshot& s) {
           {"converged", st.converged ? "yes" : "no"}}});
 }
 
+// 3D zones: their stresses, the nodes, and each face's surface triangles with the zone each
+// bounds (the zone around the triangle's first node holding all three).
+void copy_zones3(const Model& m, Snapshot& s) {
+  const Continuum3& c = m.continuum3;
+  const Blocks3& B = m.blocks3;
+  if (c.zone_count() == 0) return;
+  s.nodes3 = c.pos, s.nodes3_start = c.pos0;
+  s.zones.resize(c.zone_count());
+  std::vector<uint32_t> around_begin(c.node_count() + 1, 0), around;
+  for (const auto& t : c.zones)
+    for (uint32_t n : t) ++around_begin[n + 1];
+  for (size_t n = 0; n < c.node_count(); ++n) around_begin[n + 1] += around_begin[n];
+  around.resize(around_begin.back());
+  std::vector<uint32_t> fill(around_begin.begin(), around_begin.end() - 1);
+  for (uint32_t z = 0; z < c.zone_count(); ++z) {
+    for (uint32_t n : c.zones[z]) around[fill[n]++] = z;
+    SnapshotZone& o = s.zones[z];
+    const ZoneStress& st = c.stress[z];
+    o.sxx = st.xx, o.syy = st.yy, o.szz = st.zz, o.sxy = st.xy, o.syz = st.yz, o.sxz = st.xz;
+    o.state = c.state[z];
+  }
+  for (size_t b = 0; b < B.size(); ++b) {
+    if (!B.deformable[b]) continue;
+    // (null zones, excavated, keep block -1: nothing is drawn of them)
+    for (uint32_t z = B.zone_begin[b]; z < B.zone_end[b]; ++z)
+      if (c.materials[c.material[z]].impl->solid()) s.zones[z].block = static_cast<int>(b);
+    for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f)
+      for (uint32_t k = B.ftri_begin[f]; k < B.ftri_begin[f + 1]; ++k) {
+        const auto& t = B.ftri[k];
+        Snapshot::Tri3 tri;
+        tri.n[0] = t[0], tri.n[1] = t[1], tri.n[2] = t[2], tri.face = f;
+        for (uint32_t i = around_begin[t[0]]; i < around_begin[t[0] + 1]; ++i) {
+          const auto& zn = c.zones[around[i]];
+          const auto has = [&](uint32_t n) {
+            return std::find(zn.begin(), zn.end(), n) != zn.end();
+          };
+          if (has(t[1]) && has(t[2])) tri.zone = around[i];
+        }
+        s.tris3.push_back(tri);
+      }
+  }
+}
+
 // 3D models: blocks (centroid, displacement, velocity, angle turned), every face as a polygon of
 // world points, every sub-contact.
 void copy_blocks3(const Model& m, Snapshot& s) {
@@ -161,6 +204,7 @@ void copy_blocks3(const Model& m, Snapshot& s) {
     o.theta = 2.0 * std::acos(std::min(1.0, std::abs(body.orientation.dot(B.ref_q[mb]))));
     o.omega = B.omega[mb].norm();
     o.area = B.volume[b], o.mass = body.mass, o.fixity = B.fixity[b];
+    o.deformable = B.deformable[b] != 0;
     for (uint32_t f = B.face_begin[b]; f < B.face_begin[b + 1]; ++f) {
       Snapshot::Face3 face;
       face.block = static_cast<int>(b);
@@ -176,6 +220,7 @@ void copy_blocks3(const Model& m, Snapshot& s) {
       first = false;
     }
   }
+  copy_zones3(m, s);
   for (const Contact3& c : m.contacts3)
     for (const SubContact& sub : c.subs) {
       SnapshotContact o;

@@ -33,7 +33,8 @@ namespace {
 // A polydata of filled polygons with one RGB colour per cell, at height z, each `dz` above the
 // one before (3D scenes come in painter's order: the nearest face last, so highest).
 void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
-                   const std::vector<Rgb>& colours, double z, double dz = 0.0) {
+                   const std::vector<Rgb>& colours, double z, double dz = 0.0,
+                   const std::vector<size_t>* stack = nullptr) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkUnsignedCharArray> rgb;
@@ -41,7 +42,7 @@ void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
   rgb->SetName("colour");
   for (size_t i = 0; i < polys.size(); ++i) {
     cells->InsertNextCell(static_cast<int>(polys[i].size()));
-    const double zi = z + dz * static_cast<double>(i);
+    const double zi = z + dz * static_cast<double>(stack ? (*stack)[i] : i);
     for (const Vec2& v : polys[i])
       cells->InsertCellPoint(points->InsertNextPoint(v.x(), v.y(), zi));
     const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
@@ -211,7 +212,14 @@ void VtkView::rebuild() {
     // Faces stacked in drawing order below the contacts, each outline just above its face.
     const double dz = 0.0025 / static_cast<double>(std::max<size_t>(polys.size(), 1));
     fill_polygons(blocks_, polys, colours, 0.0, dz);
-    fill_polygons(edges_, polys, colours, 0.5 * dz, dz);
+    // Outlines of block faces only (not of zones' surface triangles), each at its face's height.
+    std::vector<std::vector<Vec2>> outlined;
+    std::vector<Rgb> outline_colours;
+    std::vector<size_t> stack;
+    for (size_t i = 0; i < scene_.polygons.size(); ++i)
+      if (scene_.polygons[i].outline)
+        outlined.push_back(polys[i]), outline_colours.push_back(colours[i]), stack.push_back(i);
+    fill_polygons(edges_, outlined, outline_colours, 0.5 * dz, dz, &stack);
   } else {
     fill_polygons(blocks_, polys, colours, 0.0);
     // Block outlines above the zones, which sit above the block fills.

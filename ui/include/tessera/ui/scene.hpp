@@ -18,7 +18,8 @@ namespace tessera::ui {
 struct ScenePolygon {
   std::vector<Vec2> points;
   Rgb colour;
-  int block = -1;  // index in the snapshot
+  int block = -1;       // index in the snapshot
+  bool outline = true;  // drawn with a dark edge (a 3D zone's surface triangle is not)
 };
 
 // A contact drawn as a bar along the joint, its width showing the normal force.

@@ -47,10 +47,13 @@ struct SnapshotContact {
 };
 
 // A zone of a deformable block: its nodes (into Snapshot::nodes), block, stress, plastic state.
+// In 3D models every zone is kept, for the stress of its surface triangles (tris3); a null
+// (excavated) zone has block -1.
 struct SnapshotZone {
   uint32_t n[3] = {0, 0, 0};
   int block = -1;
   double sxx = 0, syy = 0, sxy = 0, szz = 0;
+  double syz = 0, sxz = 0;  // 3D
   uint8_t state = 0;
 };
 
@@ -92,6 +95,14 @@ struct Snapshot {
   };
   std::vector<Vec3> points3;
   std::vector<Face3> faces3;
+  // 3D deformable blocks: each surface triangle of a face (nodes into nodes3, its face in
+  // faces3, the zone it bounds in zones), and the nodes as they are and as they started.
+  struct Tri3 {
+    uint32_t n[3] = {0, 0, 0};
+    uint32_t face = 0, zone = 0;
+  };
+  std::vector<Tri3> tris3;
+  std::vector<Vec3> nodes3, nodes3_start;
 };
 
 // Takes a snapshot of the model (block world caches must be current).
