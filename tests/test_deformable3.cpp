@@ -343,6 +343,73 @@ class TestDeformable3 : public QObject {
     QVERIFY(worst_u < 0.03);
   }
 
+  // An extruded 2D jointed model: a 2 x 2 m zoned rock square on a rigid base, rollers on its
+  // sides, cut through its centre by a joint dipping 30 degrees and loaded on top by 1 MPa, in
+  // 2D (plane strain) and as its 3D extrusion (0.5 m thick, y held on both faces). The joint
+  // either stays elastic (45 degrees' friction, stiff) or slips (15 degrees against the 19 the
+  // load would need, soft: kn = E / 1 m) until the rollers and the rock hold it. The 3D model
+  // gives the 2D answer: the top's settlement and the slip across the joint (the upper side's
+  // x displacement less the lower side's, at the centre) within 3% of the 2D ones.
+  void extrudedJointedModelGivesThe2DAnswer_data() {
+    QTest::addColumn<double>("friction");
+    QTest::addColumn<double>("kn");
+    QTest::newRow("elastic") << 45.0 << 1e9;
+    QTest::newRow("slipping") << 15.0 << 1e9;
+  }
+  void extrudedJointedModelGivesThe2DAnswer() {
+    QFETCH(double, friction);
+    QFETCH(double, kn);
+    const std::string common =
+        "material define stone density=2500\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+        "joint define j kn=" +
+        std::to_string(kn) + " ks=" + std::to_string(kn) + " friction=" + std::to_string(friction) +
+        "\njoint assign j\n";
+    ScriptRun flat;
+    flat.run("round 0.01\n" + common +
+             "block -1,-1 3,-1 3,0 -1,0 group=base material=stone\nfix group=base\n"
+             "block 0,0 2,0 2,2 0,2 group=rock material=rock\n"
+             "crack -0.1,(1-1.1*tan(30)) 2.1,(1+1.1*tan(30)) group=rock\n"
+             "zone generate edge=0.1 group=rock\n"
+             "boundary fix=x x=-0.001,0.001\nboundary fix=x x=1.999,2.001\n"
+             "boundary stress=0,-1e6,0 y=1.999,2.001\n"
+             "history ydisp at=1,1.999 label=top\nsolve ratio=1e-6 cycles=200000");
+    ScriptRun solid;
+    solid.run("dimension 3\ntolerance 0.01\n" + common +
+              "block box -1,-1,-1 3,1.5,0 group=base material=stone\nfix group=base\n"
+              "block box 0,0,0 2,0.5,2 group=rock material=rock\n"
+              "crack dip=30 ddir=270 origin=1,0.25,1 group=rock\n"
+              "zone generate edge=0.15 group=rock\n"
+              "boundary fix=x x=-0.001,0.001\nboundary fix=x x=1.999,2.001\n"
+              "boundary fix=y y=-0.001,0.001\nboundary fix=y y=0.499,0.501\n"
+              "boundary stress=0,0,-1e6,0,0,0 z=1.999,2.001\n"
+              "history zdisp at=1,0.25,1.999 label=top\nsolve ratio=1e-6 cycles=200000");
+    const Model &a = flat.model(), &b = solid.model();
+    const double top2 = last(a, "top"), top3 = last(b, "top");
+    // Slip: the shear displacement of the joint's contacts (not the base's, block 1), their
+    // mean weighted by length in 2D and by area in 3D.
+    double slip2 = 0, length = 0, slip3 = 0, area = 0;
+    const Contacts& C = a.contacts;
+    for (size_t i = 0; i < C.a.size(); ++i)
+      if (C.a[i] != 0 && C.b[i] != 0)
+        slip2 += C.length[i] * std::abs(C.shear_disp[i]), length += C.length[i];
+    for (const Contact3& c : b.contacts3)
+      if (c.a != 0 && c.b != 0)
+        for (const SubContact& sub : c.subs)
+          slip3 += sub.area * std::hypot(sub.sd1, sub.sd2), area += sub.area;
+    slip2 /= length, slip3 /= area;
+    qInfo("%zu triangles, %zu tetrahedra; %llu and %llu cycles; joint %.4f m long, %.4f m2",
+          a.continuum.zone_count(), b.continuum3.zone_count(),
+          static_cast<unsigned long long>(a.cycle), static_cast<unsigned long long>(b.cycle),
+          length, area);
+    qInfo("top settles %.5e m in 2D, %.5e m in 3D; mean slip %.4e m in 2D, %.4e m in 3D", -top2,
+          -top3, slip2, slip3);
+    // Contacts cover the joint (2 / cos 30 long; both sides' nodes in 3D, each half the area).
+    QVERIFY(std::abs(length / (2 / std::cos(M_PI / 6)) - 1) < 0.02);
+    QVERIFY(top2 < 0 && slip2 > 0);
+    QVERIFY(std::abs(top3 / top2 - 1) < 0.03);
+    QVERIFY(std::abs(slip3 / slip2 - 1) < 0.03);
+  }
+
   // Bad input names the line and the block.
   void badInputIsNamed() {
     const auto fails = [](const std::string& text, const char* expect) {
