@@ -328,6 +328,33 @@ class TestExamples : public QObject {
     }
   }
 
+  // SIGTERM while a 3D block is being meshed (a job of a million zones, minutes long) stops the
+  // mesher at once: the block is left rigid, and the results and the state are written as for
+  // a stop between cycles.
+  void signalStopsTheMesher() {
+    const QString path = write_file(dir_, "mesh_long.tess",
+                                    "dimension 3\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+                                    "block box 0,0,0 8,8,8 material=rock\nvtk\n"
+                                    "print \"meshing\"\nzone generate edge=0.16\nstep 10\n");
+    QProcess p;
+    const QString out = path + "_out";
+    p.start(TESSERA_EXE, QStringList{"--batch", path, "--out", out});
+    QVERIFY(p.waitForStarted());
+    QByteArray said;
+    QTRY_VERIFY_WITH_TIMEOUT((said += p.readAllStandardOutput()).contains("meshing"), 60000);
+    QTest::qWait(500);  // well into the mesh, which takes far longer
+    ::kill(static_cast<pid_t>(p.processId()), SIGTERM);
+    QVERIFY(p.waitForFinished(120000));
+    said += p.readAllStandardOutput();
+    const QString err = p.readAllStandardError();
+    qInfo("%s\n%s", said.trimmed().constData(), qPrintable(err.trimmed()));
+    QCOMPARE(p.exitCode(), 128 + SIGTERM);
+    QVERIFY(said.contains("zone generate stopped while meshing block 1"));
+    QVERIFY(err.contains("interrupted by SIGTERM at cycle 0"));
+    QVERIFY(QFile::exists(out + "/interrupted.state"));
+    QVERIFY(QFileInfo(out + "/summary.json").size() > 0);
+  }
+
   void tunnelStandsThenIsExcavated() {
     const Run r = run_example("tunnel_jointed", {}, dir_);
     QCOMPARE(r.exit_code, 0);

@@ -3,6 +3,7 @@
 // angle, triangles and tetrahedra tile the block exactly.
 #include <Eigen/Dense>
 #include <QtTest>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -305,6 +306,31 @@ class TestZones : public QObject {
   // one piece, each piece's zones filling its volume, nodes shared across the faces between
   // pieces (each face's zone faces on one side are the other side's), every piece's corners
   // nodes, the same mesh every time.
+  // A stop flag set while meshing (a signal, the window's Stop) ends the mesher by
+  // ZoningStopped, a single block or a joined body, and leaves nothing behind: the same block
+  // meshed afterwards is the same mesh as before.
+  void meshingStopsOnItsFlag() {
+    const Polyhedron block = box(Vec3::Zero(), Vec3(2, 1, 1));
+    const ZoneMesh3 before = zone_polyhedron(block, 0.3);
+    std::atomic<bool> stop{true};
+    const auto stopped = [&](const auto& mesh) {
+      try {
+        mesh();
+      } catch (const ZoningStopped&) {
+        return true;
+      }
+      return false;
+    };
+    QVERIFY(stopped([&] { zone_polyhedron(block, 0.3, 2000000, nullptr, &stop); }));
+    QVERIFY(stopped([&] {
+      zone_pieces({box(Vec3::Zero(), Vec3(1, 1, 1)), box(Vec3(1, 0, 0), Vec3(2, 1, 1))}, 0.3,
+                  2000000, nullptr, &stop);
+    }));
+    stop = false;
+    const ZoneMesh3 after = zone_polyhedron(block, 0.3, 2000000, nullptr, &stop);
+    QVERIFY(after.nodes == before.nodes && after.tets == before.tets);
+  }
+
   void piecesMeshAsOneBody() {
     const std::vector<Polyhedron> pieces{box(Vec3(0, 0, 0), Vec3(1, 1, 1)),
                                          box(Vec3(1, 0, 0), Vec3(2, 1, 1)),

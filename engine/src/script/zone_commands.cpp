@@ -7,6 +7,7 @@
 #include "tessera/script/script.hpp"
 #include "tessera/zones/deformable.hpp"
 #include "tessera/zones/deformable3.hpp"
+#include "tessera/zones/zoning3.hpp"
 
 namespace tessera {
 
@@ -125,14 +126,22 @@ void Interpreter::cmd_zone(Args& a) {
       for (size_t b : sel) {
         if (model_.blocks3.deformable[b]) continue;
         try {
-          worst = std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr));
+          worst =
+              std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr, stop_));
         } catch (const std::invalid_argument& e) {
           fail("block " + std::to_string(model_.blocks3.id[b]) + ": " + e.what());
+        } catch (const ZoningStopped&) {
+          // A stop (signal, Stop button) while meshing: the blocks zoned so far stay zoned, this
+          // one and the rest rigid; the script ends before its next line.
+          log("zone generate stopped while meshing block " + std::to_string(model_.blocks3.id[b]) +
+              ": it and the blocks after it are left rigid");
+          break;
         }
       }
-      log("zone: " + std::to_string(c.zone_count() - before) + " tetrahedra, " +
-          std::to_string(c.node_count()) + " nodes in all; smallest dihedral angle " +
-          std::to_string(worst).substr(0, 5) + " degrees");
+      if (c.zone_count() > before)
+        log("zone: " + std::to_string(c.zone_count() - before) + " tetrahedra, " +
+            std::to_string(c.node_count()) + " nodes in all; smallest dihedral angle " +
+            std::to_string(worst).substr(0, 5) + " degrees");
       overlap_checked_ = false;
       return;
     }

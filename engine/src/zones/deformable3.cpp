@@ -72,7 +72,8 @@ void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, u
 
 }  // namespace
 
-double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading) {
+double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading,
+                        const std::atomic<bool>* stop) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
   // The body's pieces (one for a convex block), in block order: one mesh for all of them.
@@ -90,11 +91,11 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
   sync_zone_materials(m);
   ZoneMesh3 mesh;
   if (pieces.size() == 1) {
-    mesh = zone_polyhedron(B.polyhedron(b), max_edge, 2000000, grading);
+    mesh = zone_polyhedron(B.polyhedron(b), max_edge, 2000000, grading, stop);
   } else {
     std::vector<Polyhedron> polys;
     for (size_t k : pieces) polys.push_back(B.polyhedron(k));
-    mesh = zone_pieces(polys, max_edge, 2000000, grading);
+    mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
   }
   Continuum3& c = m.continuum3;
   const auto zone0 = static_cast<uint32_t>(c.zone_count());

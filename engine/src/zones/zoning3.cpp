@@ -43,13 +43,17 @@ K::Point_3 point3(const Vec3& p) {
 
 // The mesher's size field: the grading's size at a point, or the uniform size.
 template <class Index>
+// The mesher asks it for the size at every point it refines, so it is also where a stop asked
+// for from another thread (a signal, the window's Stop) ends the meshing: by ZoningStopped.
 struct SizeField {
   double max_edge;
   const ZoneGrading3* grading;
   double factor;  // the bound as a multiple of the edge length
+  const std::atomic<bool>* stop;
   using FT = K::FT;
   using Point_3 = K::Point_3;
   FT operator()(const Point_3& p, int, const Index&) const {
+    if (stop && stop->load(std::memory_order_relaxed)) throw ZoningStopped();
     return factor * (grading ? grading->size_at(vec(p), max_edge) : max_edge);
   }
 };
@@ -159,15 +163,16 @@ std::vector<std::array<Vec3, 2>> feature_segments(const std::vector<Polyhedron>&
 // fine, not only where they are coarse.
 template <class C3t3, class D>
 C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
-            bool graded_distance = false) {
+            const std::atomic<bool>* stop, bool graded_distance = false) {
   using Tr = typename C3t3::Triangulation;
   using Criteria = CGAL::Mesh_criteria_3<Tr>;
   using Field = SizeField<typename D::Index>;
   // Sizes: the block's edges split into pieces of at most the size; surface triangles and zones
   // bounded by the circumradius of the equilateral triangle and the regular tetrahedron of that
   // edge (h / sqrt 3, h sqrt(3/8)), so that zones of a regular shape have edges of about h.
-  const Field edge{max_edge, grading, 1.0}, facet{max_edge, grading, 1.0 / std::sqrt(3.0)},
-      cell{max_edge, grading, std::sqrt(3.0 / 8.0)};
+  const Field edge{max_edge, grading, 1.0, stop},
+      facet{max_edge, grading, 1.0 / std::sqrt(3.0), stop},
+      cell{max_edge, grading, std::sqrt(3.0 / 8.0), stop};
   namespace params = CGAL::parameters;
   const auto run = [&](const Criteria& criteria) {
     // The perturber draws from CGAL's default generator: seeded here, the same block gives the
@@ -184,7 +189,7 @@ C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
                         params::cell_radius_edge_ratio = 2.0, params::cell_size = cell));
   // Between pieces, a surface triangle's corners must lie on one face (else, with all three on
   // some face, it may cut across a thin piece).
-  const Field distance{max_edge, grading, 0.1};
+  const Field distance{max_edge, grading, 0.1, stop};
   return run(Criteria(params::edge_size = edge, params::facet_angle = 25.0,
                       params::facet_size = facet, params::facet_distance = distance,
                       params::facet_topology = CGAL::FACET_VERTICES_ON_SAME_SURFACE_PATCH,
@@ -273,7 +278,7 @@ double min_dihedral_angle(const std::array<Vec3, 4>& p) {
 }
 
 ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_zones,
-                          const ZoneGrading3* grading) {
+                          const ZoneGrading3* grading, const std::atomic<bool>* stop) {
   if (!(max_edge > 0)) throw std::invalid_argument("the zone size must be positive");
   const Surface surface = surface_of(block);
   if (!CGAL::is_closed(surface)) throw std::invalid_argument("the block's surface is not closed");
@@ -294,7 +299,7 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
   using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
   using C3t3 =
       CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
-  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading);
+  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading, stop);
   std::vector<std::pair<uint32_t, C3t3::Cell_handle>> cells;
   for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
     cells.emplace_back(0, c);
@@ -302,7 +307,7 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
 }
 
 ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge, size_t max_zones,
-                      const ZoneGrading3* grading) {
+                      const ZoneGrading3* grading, const std::atomic<bool>* stop) {
   if (!(max_edge > 0)) throw std::invalid_argument("the zone size must be positive");
   if (pieces.empty()) throw std::invalid_argument("no pieces to zone");
   // Each piece's faces as half-spaces (the pieces are convex), and the body's box.
@@ -358,7 +363,7 @@ ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge, si
   using Tr = CGAL::Mesh_triangulation_3<PieceDomain, CGAL::Default, CGAL::Sequential_tag>::type;
   using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, PieceDomain::Corner_index,
                                                        PieceDomain::Curve_index>;
-  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading, true);
+  const C3t3 c3t3 = refine<C3t3>(domain, max_edge, grading, stop, true);
   // A zone's piece: the one holding its centroid. The mesher labels a cell by its circumcentre,
   // which for a sliver against a face can lie in the next piece or outside: such a sliver would
   // be in the wrong piece or missing. A cell it left out is a zone if its centroid lies inside a

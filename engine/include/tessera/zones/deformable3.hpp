@@ -3,6 +3,7 @@
 // The 3D counterpart of deformable.hpp, on the same Continuum kernel.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -16,8 +17,10 @@ namespace tessera {
 // faces between its pieces (they share nodes: no joint there); each piece keeps its own zones,
 // material and face triangles, and all share the body's node range. Returns the smallest
 // dihedral angle of its zones (degrees). Throws std::invalid_argument if a material has no
-// elastic constants or the block is deformable already.
-double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading = nullptr);
+// elastic constants or the block is deformable already, and ZoningStopped (the model
+// unchanged) when `stop` is set while it meshes.
+double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading = nullptr,
+                        const std::atomic<bool>* stop = nullptr);
 // Refreshes the corners and face planes of every deformable 3D block from its nodes.
 void update_deformable_world3(Model& m);
 // Adds the sub-contact forces on deformable 3D blocks to their nodes, in a fixed order per block.

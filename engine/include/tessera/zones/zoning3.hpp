@@ -6,7 +6,9 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "tessera/contact3d/polyhedron.hpp"
@@ -15,6 +17,11 @@
 namespace tessera {
 
 using ZoneGrading3 = Grading<Vec3>;
+
+// Thrown when meshing is stopped by its stop flag; nothing of the mesh is kept.
+struct ZoningStopped : std::runtime_error {
+  ZoningStopped() : std::runtime_error("zoning stopped") {}
+};
 
 struct ZoneMesh3 {
   std::vector<Vec3> nodes;
@@ -32,8 +39,10 @@ struct ZoneMesh3 {
 // block's. The same input gives the same mesh. Throws std::invalid_argument for a block that
 // is not a closed, outward-facing surface, a size that is not positive, or one that would make
 // more than `max_zones` zones.
+// `stop`, when given and set from another thread, ends the meshing by ZoningStopped.
 ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_zones = 2000000,
-                          const ZoneGrading3* grading = nullptr);
+                          const ZoneGrading3* grading = nullptr,
+                          const std::atomic<bool>* stop = nullptr);
 
 // One mesh filling a body of convex pieces that touch along their faces (a joined block): the
 // zones conform across the faces between pieces (nodes shared, no joint), each zone lies in one
@@ -41,7 +50,8 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
 // covered by zone faces; otherwise as zone_polyhedron. Edges of pieces that end on another's
 // edge, or cross it, are split there.
 ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge,
-                      size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr);
+                      size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr,
+                      const std::atomic<bool>* stop = nullptr);
 
 // Smallest dihedral angle of a tetrahedron, degrees (0 for a flat one).
 double min_dihedral_angle(const std::array<Vec3, 4>& corners);
