@@ -37,6 +37,20 @@ const char* kRollers =
     "boundary fix=x x=-0.001,0.001\nboundary fix=x x=0.999,1.001\n"
     "boundary fix=y y=-0.001,0.001\nboundary fix=y y=0.999,1.001\n";
 
+// A zone's centroid in the x-z plane (initial or current positions) in polar form, with its
+// radial and hoop stresses there (compression positive): the slab tests' holes run along y.
+struct Polar3 {
+  double r, theta, sr, st;
+};
+Polar3 zone_polar3(const Continuum3& c, size_t z, bool current) {
+  Vec3 x = Vec3::Zero();
+  for (uint32_t n : c.zones[z]) x += (current ? c.pos[n] : c.pos0[n]) / 4.0;
+  const double th = std::atan2(x.z(), x.x()), cs = std::cos(th), sn = std::sin(th);
+  const ZoneStress& s = c.stress[z];
+  return {std::hypot(x.x(), x.z()), th, -(s.xx * cs * cs + s.zz * sn * sn + 2 * s.xz * sn * cs),
+          -(s.xx * sn * sn + s.zz * cs * cs - 2 * s.xz * sn * cs)};
+}
+
 // Normal force of every sub-contact of the 3D contacts, summed.
 double total_normal_force(const Model& m) {
   double sum = 0;
@@ -296,13 +310,8 @@ class TestDeformable3 : public QObject {
     std::array<int, 10> nwall{}, nring{};
     for (size_t z = 0; z < c.zone_count(); ++z) {
       if (!c.materials[c.material[z]].impl->solid()) continue;
-      Vec3 x = Vec3::Zero();
-      for (uint32_t n : c.zones[z]) x += c.pos0[n] / 4.0;
-      const double rr = std::hypot(x.x(), x.z()), th = std::atan2(x.z(), x.x());
-      const double cs = std::cos(th), sn = std::sin(th);
-      const ZoneStress& s = c.stress[z];
-      const double sr = -(s.xx * cs * cs + s.zz * sn * sn + 2 * s.xz * sn * cs);
-      const double st = -(s.xx * sn * sn + s.zz * cs * cs - 2 * s.xz * sn * cs);
+      const Polar3 p3 = zone_polar3(c, z, false);
+      const double rr = p3.r, th = p3.theta, sr = p3.sr, st = p3.st;
       const auto bin = std::min<size_t>(9, static_cast<size_t>(th / (0.5 * M_PI) * 10));
       double kr, kt;
       kirsch(rr, th, kr, kt);
@@ -397,13 +406,8 @@ class TestDeformable3 : public QObject {
     std::array<int, kRings> count{};
     for (size_t z = 0; z < c.zone_count(); ++z) {
       if (!c.materials[c.material[z]].impl->solid()) continue;
-      Vec3 x = Vec3::Zero();
-      for (uint32_t n : c.zones[z]) x += c.pos[n] / 4.0;
-      const double rr = std::hypot(x.x(), x.z()) / wall, th = std::atan2(x.z(), x.x());
-      const double cs = std::cos(th), sn = std::sin(th);
-      const ZoneStress& s = c.stress[z];
-      const double srad = -(s.xx * cs * cs + s.zz * sn * sn + 2 * s.xz * sn * cs);
-      const double shoop = -(s.xx * sn * sn + s.zz * cs * cs - 2 * s.xz * sn * cs);
+      const Polar3 p3 = zone_polar3(c, z, true);
+      const double rr = p3.r / wall, th = p3.theta, srad = p3.sr, shoop = p3.st;
       const double fs =
           kp * std::min(srad, shoop) - std::max(srad, shoop) + 2 * coh * std::sqrt(kp);
       if (fs <= 0.005 * p0) {

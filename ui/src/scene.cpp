@@ -132,32 +132,45 @@ void set_range(Legend& L, ColourBy c, bool continuous, const Items& items, Value
   L.lo = lo, L.hi = hi;
 }
 
-// The caption's note on the stresses shown.
-const char* stress_note(ColourBy c) {
-  return c == ColourBy::kSigma1   ? "   stresses tension +, sigma1 most compressive"
-         : c == ColourBy::kSigma3 ? "   stresses tension +, sigma3 least compressive"
-                                  : "   stresses tension +";
+// A zone's colour for the quantity shown: its state's, or the ramp over the range lo..hi.
+struct ZonePalette {
+  ColourBy colour;
+  double lo = 0, hi = 0;
+  Rgb operator()(const SnapshotZone& z) const {
+    const double v = zone_value(z, colour);
+    return colour == ColourBy::kZoneState ? kStateColours[static_cast<int>(v)]
+                                          : ramp((v - lo) / (hi - lo));
+  }
+};
+
+// The legend of a picture of these zones (the states' key, or a ramp over their range) and the
+// caption's note on the stresses; returns their palette. 2D and 3D alike.
+ZonePalette zone_legend(const std::vector<SnapshotZone>& zones, const ViewOptions& o, Scene& out) {
+  ZonePalette palette{o.colour};
+  Legend& L = out.blocks_legend;
+  const bool states = o.colour == ColourBy::kZoneState;
+  set_range(
+      L, o.colour, !states, zones, [&](const SnapshotZone& z) { return zone_value(z, o.colour); },
+      1e-12, palette.lo, palette.hi);
+  if (states)
+    for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
+  else
+    out.caption += o.colour == ColourBy::kSigma1 ? "   stresses tension +, sigma1 most compressive"
+                   : o.colour == ColourBy::kSigma3
+                       ? "   stresses tension +, sigma3 least compressive"
+                       : "   stresses tension +";
+  return palette;
 }
 
 // Zones of deformable blocks coloured by a zone quantity, with their legend.
 void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
-  Legend& L = out.blocks_legend;
-  const bool states = o.colour == ColourBy::kZoneState;
-  double lo = 0, hi = 0;
-  set_range(
-      L, o.colour, !states, s.zones, [&](const SnapshotZone& z) { return zone_value(z, o.colour); },
-      1e-12, lo, hi);
-  if (states)
-    for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
-  else
-    out.caption += stress_note(o.colour);
+  const ZonePalette palette = zone_legend(s.zones, o, out);
   for (const SnapshotZone& z : s.zones) {
     ScenePolygon p;
     p.block = z.block;
     for (uint32_t n : z.n)
       p.points.push_back(s.nodes_start[n] + o.magnify * (s.nodes[n] - s.nodes_start[n]));
-    const double v = zone_value(z, o.colour);
-    p.colour = states ? kStateColours[static_cast<int>(v)] : ramp((v - lo) / (hi - lo));
+    p.colour = palette(z);
     out.zones.push_back(std::move(p));
   }
 }
@@ -184,22 +197,11 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
       out.blocks_legend.title = value_title(o.colour) + " (no zones)";
       return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out);
     }
-    Legend& L = out.blocks_legend;
-    const bool states = o.colour == ColourBy::kZoneState;
-    double lo = 0, hi = 0;
-    set_range(
-        L, o.colour, !states, drawn, [&](const SnapshotZone& z) { return zone_value(z, o.colour); },
-        1e-12, lo, hi);
-    if (states)
-      for (int k = 0; k < 4; ++k) L.entries.push_back({kStateNames[k], kStateColours[k]});
-    else
-      out.caption += stress_note(o.colour);
+    const ZonePalette palette = zone_legend(drawn, o, out);
     return add_faces3(s, o, std::vector<Rgb>(s.blocks.size(), kNoZones), out,
                       [&](const SnapshotZone& z) -> std::optional<Rgb> {
                         if (z.block < 0) return std::nullopt;
-                        const double v = zone_value(z, o.colour);
-                        return states ? kStateColours[static_cast<int>(v)]
-                                      : ramp((v - lo) / (hi - lo));
+                        return palette(z);
                       });
   }
   if (colours_zones(o.colour)) {
