@@ -504,6 +504,16 @@ class TestExamples : public QObject {
     QVERIFY(red > 1000 && blue > 1000 && grey > 5000);
     QVERIFY(red_y + img.height() / 5 < blue_y);
     QVERIFY(ramp.size() >= 12);
+    // The caption wraps to three lines at this width, all on the page: text near the bottom,
+    // none in the last rows (a cut-off line would run into the edge).
+    const auto dark_in_rows = [&](int from, int to) {
+      long dark = 0;
+      for (int py = from; py < to; ++py)
+        for (int px = 0; px < img.width(); ++px) dark += qGray(img.pixel(px, py)) < 100;
+      return dark;
+    };
+    QVERIFY(dark_in_rows(img.height() - 60, img.height() - 8) > 100);
+    QCOMPARE(dark_in_rows(img.height() - 6, img.height()), 0L);
   }
   void rockWedgeStandsThenSlidesAlongTheIntersection() {
     const Run r = run_example("rock_wedge", {}, dir_);
