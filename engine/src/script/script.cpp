@@ -312,9 +312,10 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     const Vec3 p = point3(v);
     // The block holding the point, or else the one whose surface is nearest within the contact
     // tolerance (a point on a face, as on the top of a column).
+    // (The search ends at a block holding it; a model without a tolerance takes only those.)
     size_t best = B3.size();
-    double nearest = model_.tolerance();
-    for (size_t b = 0; b < B3.size() && nearest > 0.0; ++b) {
+    double nearest = std::max(model_.tolerance(), 0.0);
+    for (size_t b = 0; b < B3.size() && (best == B3.size() || nearest > 0.0); ++b) {
       double outside = -1e300;
       for (uint32_t f = B3.face_begin[b]; f < B3.face_begin[b + 1]; ++f)
         outside = std::max(outside, B3.world_normal[f].dot(p) - B3.world_offset[f]);
@@ -331,8 +332,8 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     // The block holding the point, or else the one whose outline is nearest within the contact
     // tolerance (a point on an edge, as on the top of a column).
     size_t best = B.size();
-    double nearest = model_.tolerance();
-    for (size_t b = 0; b < B.size() && nearest > 0.0; ++b) {
+    double nearest = std::max(model_.tolerance(), 0.0);
+    for (size_t b = 0; b < B.size() && (best == B.size() || nearest > 0.0); ++b) {
       const std::vector<Vec2> poly = B.world_polygon(b);
       if (point_in_polygon(p, poly)) {
         best = b, nearest = 0.0;

@@ -34,8 +34,15 @@ ZoneMotion step_zones(Model& m, ContinuumT<D>& zc, const typename ContinuumT<D>:
   } else {
     update_deformable_world3(m);
   }
-  // A node that moves half the contact tolerance in one step has left explicit dynamics.
-  if (!std::isfinite(node_move) || node_move > 0.5 * m.tolerance())
+  // A node that moves half the contact tolerance in one step has left explicit dynamics (a model
+  // of one block may have no tolerance: then a hundredth of its size).
+  double limit = 0.5 * m.tolerance();
+  if (!(limit > 0)) {
+    typename ContinuumT<D>::Vec lo = zc.pos0[0], hi = zc.pos0[0];
+    for (const auto& p : zc.pos0) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    limit = 0.01 * (hi - lo).norm();
+  }
+  if (!std::isfinite(node_move) || node_move > limit)
     throw ModelError("the run diverged at cycle " + std::to_string(m.cycle) +
                      ": a node of a deformable block moved " + std::to_string(node_move) +
                      " m in one step (time step too large, or blocks overlapping badly)");
