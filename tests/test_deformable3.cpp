@@ -17,8 +17,10 @@ double last(const Model& m, const std::string& label) {
   return h.at(h.rows() - 1, static_cast<size_t>(h.find(label)));
 }
 
-// A rigid slab held fixed (block 1) and `blocks` zoned rock blocks 1 x 1 x h m stacked on it.
-std::string stack(int blocks, double h, double kn, const std::string& sides) {
+// A rigid slab held fixed (block 1) and `blocks` zoned rock blocks 1 x 1 x h m stacked on it, of
+// 4-node zones (edge 0.3) or 10-node ones (`quadratic`: edge 0.5).
+std::string stack(int blocks, double h, double kn, const std::string& sides,
+                  bool quadratic = false) {
   std::string s =
       "dimension 3\ntolerance 0.01\nmaterial define stone density=2500\n"
       "material define rock density=2000 E=1e9 nu=0.25\n"
@@ -29,7 +31,10 @@ std::string stack(int blocks, double h, double kn, const std::string& sides) {
   for (int k = 0; k < blocks; ++k)
     s += "block box 0,0," + std::to_string(k * h) + " 1,1," + std::to_string((k + 1) * h) +
          " group=rock material=rock\n";
-  return s + "zone generate edge=0.3 group=rock\n" + sides + "gravity 0 0 -10\n";
+  return s +
+         (quadratic ? "zone generate edge=0.5 order=2 group=rock\n"
+                    : "zone generate edge=0.3 group=rock\n") +
+         sides + "gravity 0 0 -10\n";
 }
 
 // Rollers on the four sides of the stack (x and y held on the faces x, y = 0 and 1).
@@ -62,22 +67,44 @@ double total_normal_force(const Model& m) {
 
 class TestDeformable3 : public QObject {
   Q_OBJECT
+  // Rows of 4-node and 10-node zones.
+  static void orders() {
+    QTest::addColumn<bool>("quadratic");
+    QTest::newRow("4-node") << false;
+    QTest::newRow("10-node") << true;
+  }
+
  private slots:
   // A 4 m zoned column between rollers on a rigid base: the top settles rho g H^2 / (2M) in
   // the column plus the joint's closure rho g H / kn, within 1%; the base's sub-contacts carry
-  // the column's weight within 0.1%.
+  // the column's weight within 0.1%. With 4-node and with 10-node zones (whose faces touch the
+  // base at their mid-edge nodes: traction_shares).
+  void columnOnARigidBase_data() { orders(); }
   void columnOnARigidBase() {
+    QFETCH(bool, quadratic);
     ScriptRun r;
-    r.run(stack(1, 4, 1e10, kRollers) +
+    r.run(stack(1, 4, 1e10, kRollers, quadratic) +
           "history zdisp at=0.5,0.5,3.999 label=top\n"
           "history zdisp at=0.5,0.5,0.001 label=bottom\nsolve ratio=1e-7 cycles=200000");
     const double k = 1e9 / (3 * (1 - 0.5)), g = 1e9 / 2.5, m = k + 4 * g / 3;
     const double column = 2000 * 10 * 16 / (2 * m), joint = 2000 * 10 * 4 / 1e10;
     const double top = -last(r.model(), "top"), bottom = -last(r.model(), "bottom");
-    qInfo("top settlement %.5e m (closed form %.5e), joint closure %.4e m (%.4e)", top,
-          column + joint, bottom, joint);
+    // The joint's mean closure over the column's foot.
+    const Continuum3& c = r.model().continuum3;
+    double foot = 0;
+    int feet = 0;
+    for (size_t n = 0; n < c.node_count(); ++n)
+      if (c.pos0[n].z() < 1e-9) foot -= c.pos[n].z() - c.pos0[n].z(), ++feet;
+    foot /= feet;
+    qInfo(
+        "top settlement %.5e m (closed form %.5e), joint closure %.4e m at the middle, %.4e m "
+        "mean (%.4e)",
+        top, column + joint, bottom, foot, joint);
     QVERIFY(std::abs(top / (column + joint) - 1) < 0.01);
-    QVERIFY(std::abs(bottom / joint - 1) < 0.02);
+    // 10-node zones' lumped weights (not the consistent body force) put the weight of the zones
+    // at the foot a little unevenly on the joint (+1.1% on the mean, +2.2% at the middle).
+    QVERIFY(std::abs(foot / joint - 1) < (quadratic ? 0.02 : 0.01));
+    QVERIFY(std::abs(bottom / joint - 1) < (quadratic ? 0.04 : 0.02));
     // Rollers carry no vertical load: the base takes all the weight.
     const double weight = 2000 * 10 * 4;
     qInfo("base reaction %.6e N (weight %.6e)", total_normal_force(r.model()), weight);
@@ -87,9 +114,11 @@ class TestDeformable3 : public QObject {
   // Two zoned cubes on the base: the joint between two deformable faces (both node sets, each
   // with half the area) is as stiff as the one against the rigid base, so each joint closes by
   // the weight above it over kn (soft joints, where the joints dominate), within 2%.
+  void deformableOnDeformable_data() { orders(); }
   void deformableOnDeformable() {
+    QFETCH(bool, quadratic);
     ScriptRun r;
-    r.run(stack(2, 1, 1e8, kRollers) +
+    r.run(stack(2, 1, 1e8, kRollers, quadratic) +
           "history zdisp at=0.5,0.5,0.999 label=lower_top\n"
           "history zdisp at=0.5,0.5,1.001 label=upper_bottom\n"
           "history zdisp at=0.5,0.5,0.001 label=lower_bottom\nsolve ratio=1e-7 cycles=200000");
@@ -204,14 +233,59 @@ class TestDeformable3 : public QObject {
     QVERIFY(scaled.model().cycle < plain.model().cycle);
   }
 
+  // A cantilever 10 x 1 x 1 m (E = 1 GPa, nu = 0.25) clamped at x = 0 under a uniform shear
+  // traction on its free end, P = 10 kN, zoned by the script's 'zone generate': the end's mean
+  // deflection against Timoshenko's beam, P L^3 / 3EI + P L / (kappa G A), Cowper's kappa =
+  // 10 (1 + nu) / (12 + 11 nu) for a rectangle (shear adds 0.7%). 10-node zones come within 2%
+  // on the coarse mesh (edge 1 m: one or two zones through the depth; -0.7%, what is left is
+  // the clamped root and the end's uniform traction, not the zoning: the finer mesh gives the
+  // same); 4-node zones lock in bending (a third too stiff on the coarse mesh, a sixth on the
+  // fine one) and close in as they get smaller.
+  void cantileverOfLinearAndQuadraticZones() {
+    const double len = 10, e = 1e9, nu = 0.25, g = e / (2 * (1 + nu)), load = 1e4;
+    const double inertia = 1.0 / 12, kappa = 10 * (1 + nu) / (12 + 11 * nu);
+    const double beam = load * len * len * len / (3 * e * inertia) + load * len / (kappa * g);
+    const auto deflection = [&](int order, double edge) {
+      ScriptRun r;
+      r.run(
+          "dimension 3\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+          "block box 0,0,0 10,1,1 material=rock\nzone generate edge=" +
+          std::to_string(edge) + " order=" + std::to_string(order) +
+          "\nboundary fix=xyz x=-0.001,0.001\n"
+          "boundary stress=0,0,0,0,0,-1e4 x=9.999,10.001\ntimestep scaled\n"
+          "solve ratio=1e-5 cycles=300000");
+      const Model& m = r.model();
+      const Continuum3& c = m.continuum3;
+      double sum = 0;
+      int count = 0;
+      for (size_t n = 0; n < c.node_count(); ++n)
+        if (c.pos0[n].x() > len - 1e-9) sum += c.pos[n].z() - c.pos0[n].z(), ++count;
+      const double d = -sum / count;
+      qInfo(
+          "%d-node, edge %.2f m: %zu zones, %llu cycles, deflection %.5g m (beam %.5g m, %+.2f%%)",
+          order == 2 ? 10 : 4, edge, c.zone_count(), static_cast<unsigned long long>(m.cycle), d,
+          beam, 100 * (d / beam - 1));
+      return m.ratio <= 1e-5 ? d : 0.0;
+    };
+    const double quad_coarse = deflection(2, 1.0), quad_fine = deflection(2, 0.7);
+    QVERIFY2(std::abs(quad_coarse / beam - 1) < 0.02, "10-node, coarse");
+    QVERIFY2(std::abs(quad_fine / beam - 1) < 0.02, "10-node, fine");
+    const double lin_coarse = deflection(1, 1.0), lin_fine = deflection(1, 0.5);
+    QVERIFY(lin_coarse > 0 && lin_fine > lin_coarse && lin_fine < beam);
+    // Converging: the finer mesh's error well under the coarser's.
+    QVERIFY(beam - lin_fine < 0.7 * (beam - lin_coarse));
+  }
+
   // Saved mid-run and restored, a 3D deformable model continues bit for bit; one thread or
   // two give the same bits.
+  void restoresAndRepeatsBitForBit_data() { orders(); }
   void restoresAndRepeatsBitForBit() {
+    QFETCH(bool, quadratic);
     uint64_t hash[2] = {};
     for (int t = 1; t <= 2; ++t) {
       set_thread_count(t);
       ScriptRun r;
-      r.run(stack(2, 1, 1e9, kRollers) + "step 300");
+      r.run(stack(2, 1, 1e9, kRollers, quadratic) + "step 300");
       const std::string path = r.path("mid.state");
       save_state(r.model(), path);
       run_cycles(r.model(), 300);
@@ -225,9 +299,11 @@ class TestDeformable3 : public QObject {
   }
 
   // Excavating one of two stacked cubes removes its nodes and zones; the other keeps its own.
+  void deletingADeformableBlock_data() { orders(); }
   void deletingADeformableBlock() {
+    QFETCH(bool, quadratic);
     ScriptRun r;
-    r.run(stack(2, 1, 1e9, kRollers) + "step 100\ndelete block=3\nstep 100");
+    r.run(stack(2, 1, 1e9, kRollers, quadratic) + "step 100\ndelete block=3\nstep 100");
     const Model& m = r.model();
     QCOMPARE(m.blocks3.size(), size_t(2));
     const Blocks3& B = m.blocks3;
@@ -524,8 +600,12 @@ class TestDeformable3 : public QObject {
         "material define rock density=2000 E=1e9 nu=0.25\n";
     QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=stone\nzone generate edge=0.5",
                   "block 1: its material has no elastic constants"));
-    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5 order=2",
-                  "order=2"));
+    QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5 order=3",
+                  "write order=1 (4-node zones) or order=2 (10-node tetrahedra, 3D)"));
+    QVERIFY(
+        fails("round 0.01\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+              "block 0,0 1,0 1,1 0,1 material=rock\nzone generate edge=0.5 order=2",
+              "order=2 (10-node tetrahedra) is for 3D models"));
     QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
                          "boundary stress=1,2,3",
                   "SXX,SYY,SZZ,SXY,SYZ,SXZ"));

@@ -107,13 +107,14 @@ std::map<std::string, std::vector<double>> read_history(const QString& dir) {
   return cols;
 }
 
-// Checks a VTK XML PolyData file: well-formed, and every data array holds as many tuples as the
-// piece has points or cells. Returns the number of cells, or -1 with a message.
-long check_vtp(const QString& path, QString& why) {
+// Checks a VTK XML PolyData or UnstructuredGrid file: well-formed, and every data array holds as
+// many tuples as the piece has points or cells, the connectivity as many as the offsets end at
+// (`types`, if given, receives the cell types). Returns the number of cells, or -1 with a message.
+long check_vtp(const QString& path, QString& why, std::set<int>* types = nullptr) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) return why = "cannot open " + path, -1;
   QXmlStreamReader xml(&f);
-  long points = -1, cells = -1;
+  long points = -1, cells = -1, connectivity = -1;
   QString section;
   while (!xml.atEnd()) {
     xml.readNext();
@@ -132,15 +133,23 @@ long check_vtp(const QString& path, QString& why) {
     } else if (name == QLatin1String("DataArray")) {
       const long comps = at.value("NumberOfComponents").toLong();
       const QString array = at.value("Name").toString();
-      const long values =
-          xml.readElementText().split(QRegularExpression("\\s+"), Qt::SkipEmptyParts).size();
-      const long expect = section == "Points"                             ? 3 * points
-                          : section == "PointData"                        ? comps * points
-                          : section == "CellData"                         ? comps * cells
-                          : array == "offsets"                            ? cells
-                          : array == "types"                              ? cells
-                          : array == "connectivity" && section == "Cells" ? 4 * cells
-                                                                          : -2;
+      const QStringList text =
+          xml.readElementText().split(QRegularExpression("\\s+"), Qt::SkipEmptyParts);
+      const long values = text.size();
+      if (array == "connectivity") connectivity = values;
+      if (array == "offsets" && section == "Cells" && !text.isEmpty() &&
+          text.back().toLong() != connectivity)
+        return why = path + ": the offsets end at " + text.back() + ", the connectivity has " +
+                     QString::number(connectivity),
+               -1;
+      if (array == "types" && types)
+        for (const QString& t : text) types->insert(t.toInt());
+      const long expect = section == "Points"      ? 3 * points
+                          : section == "PointData" ? comps * points
+                          : section == "CellData"  ? comps * cells
+                          : array == "offsets"     ? cells
+                          : array == "types"       ? cells
+                                                   : -2;
       if (expect != -2 && values != expect)
         return why = QString("%1: %2 has %3 values, expected %4")
                          .arg(path, array)
@@ -544,10 +553,47 @@ class TestExamples : public QObject {
     qInfo("zdisp figure: %ld blue and %ld red of %ld samples", blue, red, samples);
     QVERIFY(blue > samples / 100 && red > samples / 10);
   }
+  // 10-node zones in a script: the cantilever's free end deflects as Timoshenko's beam within
+  // 2% (-0.8%); the zones go to ParaView as quadratic tetrahedra (cell type 24, ten nodes
+  // each); the figure shows the bending stress, tension along the top at the root (red end of
+  // the ramp) and compression along the bottom (blue).
+  void cantileverOf10NodeZonesBendsAsABeam() {
+    const Run r = run_example("cantilever_3d", {}, dir_);
+    QCOMPARE(r.exit_code, 0);
+    QVERIFY(r.out.contains("10-node tetrahedra"));
+    const QJsonObject s = read_summary(r.dir);
+    QVERIFY(s["final_ratio"].toDouble() <= 1e-5);
+    const double p = 1e4, len = 10, e = 1e9, nu = 0.25, g = e / (2 * (1 + nu));
+    const double kappa = 10 * (1 + nu) / (12 + 11 * nu);
+    const double beam = p * len * len * len / (3 * e / 12) + p * len / (kappa * g);
+    auto h = read_history(r.dir);
+    const double tip = -h["tip"].back();
+    qInfo("tip deflection %.5g m (beam %.5g m, %+.2f%%)", tip, beam, 100 * (tip / beam - 1));
+    QVERIFY(std::abs(tip / beam - 1) < 0.02);
+    QVERIFY(h["root_top"].back() > 0);  // tension along the top
+    QString why;
+    std::set<int> types;
+    QVERIFY2(check_vtp(r.dir + "/vtk/zones_0001.vtu", why, &types) > 300, qPrintable(why));
+    QCOMPARE(types, std::set<int>{24});
+    const QString fig = r.dir + "/cantilever_sxx.png";
+    check_figure(fig, QSize(1200, 700));
+    const QImage img(fig);
+    // Red and blue both near the clamped end (the left fifth), and a spread of ramp colours.
+    long red = 0, blue = 0;
+    for (int py = 0; py < img.height(); py += 2)
+      for (int px = 0; px < img.width() / 5; px += 2) {
+        const QColor c = img.pixelColor(px, py);
+        red += c.red() > 180 && c.green() < 90 && c.blue() < 90;
+        blue += c.blue() > 180 && c.red() < 90 && c.green() < 140;
+      }
+    qInfo("cantilever figure: %ld red and %ld blue samples at the root", red, blue);
+    QVERIFY(red > 20 && blue > 20);
+  }
   void everyExampleIsChecked() {
     const QStringList checked{
-        "block_on_incline.tess", "brick_wall.tess",        "brick_wall_3d.tess", "column_3d.tess",
-        "deformable_arch.tess",  "masonry_arch.tess",      "rock_slope.tess",    "rock_wedge.tess",
+        "block_on_incline.tess", "brick_wall.tess",        "brick_wall_3d.tess",
+        "cantilever_3d.tess",    "column_3d.tess",         "deformable_arch.tess",
+        "masonry_arch.tess",     "rock_slope.tess",        "rock_wedge.tess",
         "toppling_stack.tess",   "tunnel_deformable.tess", "tunnel_jointed.tess"};
     QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
     QCOMPARE(found, checked);

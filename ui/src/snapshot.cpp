@@ -152,13 +152,13 @@ void copy_zones3(const Model& m, Snapshot& s) {
   s.nodes3 = c.pos, s.nodes3_start = c.pos0;
   s.zones.resize(c.zone_count());
   std::vector<uint32_t> around_begin(c.node_count() + 1, 0), around;
-  for (const auto& t : c.zones)
-    for (uint32_t n : t) ++around_begin[n + 1];
+  for (size_t z = 0; z < c.zone_count(); ++z)
+    c.for_zone_nodes(z, [&](uint32_t n) { ++around_begin[n + 1]; });
   for (size_t n = 0; n < c.node_count(); ++n) around_begin[n + 1] += around_begin[n];
   around.resize(around_begin.back());
   std::vector<uint32_t> fill(around_begin.begin(), around_begin.end() - 1);
   for (uint32_t z = 0; z < c.zone_count(); ++z) {
-    for (uint32_t n : c.zones[z]) around[fill[n]++] = z;
+    c.for_zone_nodes(z, [&](uint32_t n) { around[fill[n]++] = z; });
     SnapshotZone& o = s.zones[z];
     const ZoneStress& st = c.stress[z];
     o.sxx = st.xx, o.syy = st.yy, o.szz = st.zz, o.sxy = st.xy, o.syz = st.yz, o.sxz = st.xz;
@@ -175,11 +175,9 @@ void copy_zones3(const Model& m, Snapshot& s) {
         Snapshot::Tri3 tri;
         tri.n[0] = t[0], tri.n[1] = t[1], tri.n[2] = t[2], tri.face = f;
         for (uint32_t i = around_begin[t[0]]; i < around_begin[t[0] + 1]; ++i) {
-          const auto& zn = c.zones[around[i]];
-          const auto has = [&](uint32_t n) {
-            return std::find(zn.begin(), zn.end(), n) != zn.end();
-          };
-          if (has(t[1]) && has(t[2])) tri.zone = around[i];
+          int has = 0;
+          c.for_zone_nodes(around[i], [&](uint32_t n) { has += n == t[1] || n == t[2]; });
+          if (has == 2) tri.zone = around[i];
         }
         s.tris3.push_back(tri);
       }

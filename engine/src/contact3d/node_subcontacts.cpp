@@ -111,7 +111,15 @@ void side_subcontacts(const Model& m, Contact3& c, const Vec3& n, int side, doub
     }
     if (!(a2 > 1e-12 * std::abs(area2(p[0], p[1], p[2])))) continue;
     centroid /= 3.0 * a2;
-    const Vec3 lambda = barycentric(p, centroid).cwiseMax(0.0);
+    Vec3 lambda = barycentric(p, centroid).cwiseMax(0.0);
+    // A piece of a quadratic zone's face: its area to its mid-edge nodes only, as a traction's
+    // consistent loads (traction_shares), so that a uniform pressure closes it uniformly.
+    if (!z.edge_node.empty() && (z.edge_node[t[0]] | z.edge_node[t[1]] | z.edge_node[t[2]])) {
+      for (int i = 0; i < 3; ++i)
+        if (!z.edge_node[t[i]]) lambda[i] = 0.0;
+      if (!(lambda.sum() > 0.0))
+        for (int i = 0; i < 3; ++i) lambda[i] = z.edge_node[t[i]];
+    }
     const double area = 0.5 * a2 * share / lambda.sum();
     for (int i = 0; i < 3; ++i)
       if (lambda[i] > 0.0) w.share.emplace_back(t[i], area * lambda[i]);

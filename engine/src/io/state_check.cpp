@@ -137,9 +137,15 @@ void check_blocks3(Checker& c, const Model& m) {
   c.size(Z.fixity, nn, "3D node fixity"), c.size(Z.fixed_vel, nn, "3D node fixed velocities");
   c.size(Z.stress, nz, "3D zone stresses"), c.size(Z.state, nz, "3D zone states");
   c.size(Z.material, nz, "3D zone materials");
+  if (!Z.mid.empty()) {
+    c.size(Z.mid, nz, "3D mid-edge nodes"), c.size(Z.gp_stress, nz, "3D integration points");
+    c.size(Z.gp_state, nz, "3D integration point states");
+    c.size(Z.edge_node, nn, "3D mid-edge node flags");
+  }
   if (!c.ok()) return;
   for (size_t z = 0; z < nz && c.ok(); ++z) {
-    for (uint32_t k : Z.zones[z]) c.require(k < nn, name("3D zone", z) + " names a missing node");
+    Z.for_zone_nodes(
+        z, [&](uint32_t k) { c.require(k < nn, name("3D zone", z) + " names a missing node"); });
     c.require(Z.material[z] <= m.materials.size(),
               name("3D zone", z) + " names a missing material");
   }

@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 9;
+constexpr uint32_t kVersion = 10;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -215,6 +215,7 @@ void fields(IO& io, auto& m) {
   io.vec(Z3.pos), io.vec(Z3.pos0), io.vec(Z3.vel), io.vec(Z3.force), io.vec(Z3.applied);
   io.vec(Z3.mass), io.vec(Z3.inertia), io.vec(Z3.fixity), io.vec(Z3.fixed_vel);
   io.vec(Z3.zones), io.vec(Z3.stress), io.vec(Z3.state), io.vec(Z3.material);
+  io.vec(Z3.mid), io.vec(Z3.gp_stress), io.vec(Z3.gp_state), io.vec(Z3.edge_node);
   io.pod(Z3.local_damping), io.pod(Z3.dt), io.pod(Z3.time), io.pod(Z3.cycle), io.pod(Z3.ratio);
   io.vec(m.det_node3);
   count = m.contacts3.size();

@@ -230,7 +230,8 @@ void write_zones(const Model& m, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
-// Zones of deformable 3D blocks as an UnstructuredGrid of tetrahedra (VTK cell type 10): node
+// Zones of deformable 3D blocks as an UnstructuredGrid of tetrahedra (VTK cell type 10, 24 for
+// a quadratic one): node
 // displacement and velocity; per zone the stress tensor, principal stresses, strains, state.
 void write_zones3(const Model& m, const std::string& path) {
   const Continuum3& c = m.continuum3;
@@ -241,9 +242,16 @@ void write_zones3(const Model& m, const std::string& path) {
       << nn << "\" NumberOfCells=\"" << nz << "\">\n<Points>\n";
   vec3_array(out, "Points", nn, [&](size_t n) { return c.pos[n]; });
   out << "</Points>\n<Cells>\n";
-  array(out, "Int64", "connectivity", 1, 4 * nz, [&](size_t k) { return c.zones[k / 4][k % 4]; });
-  array(out, "Int64", "offsets", 1, nz, [](size_t z) { return 4 * (z + 1); });
-  array(out, "UInt8", "types", 1, nz, [](size_t) { return 10; });
+  // Each zone's nodes: corners, then (quadratic tetra) the mid-edge nodes in VTK's order.
+  std::vector<uint32_t> conn;
+  std::vector<size_t> ends;
+  for (size_t z = 0; z < nz; ++z) {
+    c.for_zone_nodes(z, [&](uint32_t n) { conn.push_back(n); });
+    ends.push_back(conn.size());
+  }
+  array(out, "Int64", "connectivity", 1, conn.size(), [&](size_t k) { return conn[k]; });
+  array(out, "Int64", "offsets", 1, nz, [&](size_t z) { return ends[z]; });
+  array(out, "UInt8", "types", 1, nz, [&](size_t z) { return c.quadratic(z) ? 24 : 10; });
   out << "</Cells>\n<PointData Vectors=\"displacement\">\n";
   vec3_array(out, "displacement", nn, [&](size_t n) { return Vec3(c.pos[n] - c.pos0[n]); });
   vec3_array(out, "velocity", nn, [&](size_t n) { return c.vel[n]; });

@@ -68,7 +68,7 @@ size_t null_zones(ContinuumT<D>& c, const NodeBox& box) {
   size_t count = 0;
   for (size_t z = 0; z < c.zone_count(); ++z) {
     if (c.material[z] == 0 || !box.holds(zone_centre(c, z))) continue;
-    c.material[z] = 0, c.stress[z] = ZoneStress{}, c.state[z] = 0, ++count;
+    c.material[z] = 0, set_zone_stress(c, z, ZoneStress{}, 0), ++count;
   }
   if (count) lump_masses(c);
   return count;
@@ -97,9 +97,10 @@ void Interpreter::cmd_zone(Args& a) {
     if (!take_num(a, "edge", edge)) missing(a, "edge", "zone generate");
     if (!(edge > 0)) fail("the zone edge must be positive");
     double order = 1;
-    if (take_num(a, "order", order) && order != 1)
-      fail(order == 2 ? "order=2 (10-node tetrahedra) is not available yet: use order=1"
-                      : "write order=1 (4-node zones)");
+    if (take_num(a, "order", order) && order != 1 && order != 2)
+      fail("write order=1 (4-node zones) or order=2 (10-node tetrahedra, 3D)");
+    if (order == 2 && !three)
+      fail("order=2 (10-node tetrahedra) is for 3D models; 2D zones are 3-node triangles");
     ZoneGrading grade;
     ZoneGrading3 grade3;
     const bool graded = take_num(a, "fine", grade.fine_edge);
@@ -126,8 +127,8 @@ void Interpreter::cmd_zone(Args& a) {
       for (size_t b : sel) {
         if (model_.blocks3.deformable[b]) continue;
         try {
-          worst =
-              std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr, stop_));
+          worst = std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr,
+                                                   stop_, order == 2));
         } catch (const std::invalid_argument& e) {
           fail("block " + std::to_string(model_.blocks3.id[b]) + ": " + e.what());
         } catch (const ZoningStopped&) {
@@ -139,7 +140,8 @@ void Interpreter::cmd_zone(Args& a) {
         }
       }
       if (c.zone_count() > before)
-        log("zone: " + std::to_string(c.zone_count() - before) + " tetrahedra, " +
+        log("zone: " + std::to_string(c.zone_count() - before) +
+            (order == 2 ? " 10-node tetrahedra, " : " tetrahedra, ") +
             std::to_string(c.node_count()) + " nodes in all; smallest dihedral angle " +
             std::to_string(worst).substr(0, 5) + " degrees");
       overlap_checked_ = false;
@@ -287,12 +289,13 @@ size_t Interpreter::boundary_stress3(const NodeBox& box, const ZoneStress& s, in
     for (uint32_t k = B.ftri_begin[f]; k < B.ftri_begin[f + 1]; ++k) {
       const auto& t = B.ftri[k];
       if (!box.holds(c.pos[t[0]]) || !box.holds(c.pos[t[1]]) || !box.holds(c.pos[t[2]])) continue;
-      // Outward normal times area, then the traction sigma . n, a third to each corner.
+      // Outward normal times area, then the traction sigma . n, shared among its nodes.
       const Vec3 n = 0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]);
       const Vec3 tr(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
                     s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
                     s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
-      for (uint32_t node : t) c.applied[node] += tr / 3.0;
+      const std::array<double, 3> share = traction_shares(t, c.edge_node);
+      for (int i = 0; i < 3; ++i) c.applied[t[i]] += share[i] * tr;
       ++count;
     }
   }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "quadratic_zones.hpp"
+
 namespace tessera {
 
 namespace {
@@ -107,15 +109,43 @@ uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material) {
     c.applied.push_back(Vec3::Zero()), c.fixed_vel.push_back(Vec3::Zero());
     c.mass.push_back(0), c.inertia.push_back(0), c.fixity.push_back(0);
   }
+  const size_t before = c.zones.size();
   for (const auto& t : mesh.tets) {
     c.zones.push_back({first + t[0], first + t[1], first + t[2], first + t[3]});
     c.stress.emplace_back(), c.state.push_back(0), c.material.push_back(material);
   }
+  // Quadratic zones: their mid-edge nodes (and every zone an entry once any zone has them).
+  if (!mesh.mid.empty() || !c.mid.empty()) {
+    std::array<uint32_t, 6> none;
+    none.fill(Continuum3::kNoMid);
+    c.mid.resize(before, none);
+    for (size_t z = 0; z < mesh.tets.size(); ++z) {
+      std::array<uint32_t, 6> m = none;
+      if (!mesh.mid.empty())
+        for (int k = 0; k < 6; ++k) m[k] = first + mesh.mid[z][k];
+      c.mid.push_back(m);
+    }
+    c.gp_stress.resize(c.zones.size()), c.gp_state.resize(c.zones.size());
+    c.edge_node.resize(c.node_count(), 0);
+    for (const auto& m : mesh.mid)
+      for (uint32_t n : m) c.edge_node[first + n] = 1;
+  }
   return first;
+}
+
+void set_zone_stress(Continuum3& c, size_t z, const ZoneStress& s, uint8_t state) {
+  c.stress[z] = s, c.state[z] = state;
+  if (c.quadratic(z)) c.gp_stress[z].fill(s), c.gp_state[z].fill(state);
+}
+
+void set_zone_stress(Continuum& c, size_t z, const ZoneStress& s, uint8_t state) {
+  c.stress[z] = s, c.state[z] = state;
 }
 
 template <int D>
 StrainIncrement total_strain(const ContinuumT<D>& c, size_t z) {
+  if constexpr (D == 3)
+    if (c.quadratic(z)) return quadratic_total_strain(c, z);
   const auto& t = c.zones[z];
   const double scaled = kFactorial<D> * measure<D>(c.pos0, t);
   StrainIncrement e =
@@ -146,8 +176,14 @@ void lump_masses(ContinuumT<D>& c) {
   for (size_t z = 0; z < c.zones.size(); ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
     if (!p.impl->solid()) continue;
-    const double m = p.density * zone_volume(c, z) / (D + 1.0);
-    for (uint32_t n : c.zones[z]) c.mass[n] += m;
+    const double m = p.density * zone_volume(c, z);
+    if constexpr (D == 3)
+      if (c.quadratic(z)) {
+        for (uint32_t n : c.zones[z]) c.mass[n] += kCornerMass * m;
+        for (uint32_t n : c.mid[z]) c.mass[n] += kMidMass * m;
+        continue;
+      }
+    for (uint32_t n : c.zones[z]) c.mass[n] += m / (D + 1.0);
   }
   c.inertia = c.mass;
 }
@@ -156,6 +192,8 @@ template <int D>
 double zone_timestep(const ContinuumT<D>& c, size_t z) {
   const ZoneProperties& p = c.materials[c.material[z]];
   if (!p.impl->solid()) return 1e300;
+  if constexpr (D == 3)
+    if (c.quadratic(z)) return quadratic_zone_step(c, z);
   const auto& t = c.zones[z];
   // The smallest height: D times the measure over the largest facet (edge, face).
   double largest = 0;
@@ -175,9 +213,31 @@ double zone_timestep(const ContinuumT<D>& c, size_t z) {
 }
 
 template <int D>
+std::vector<double> node_steps(const ContinuumT<D>& c) {
+  std::vector<double> dt(c.node_count(), 1e300), rows;
+  for (size_t z = 0; z < c.zone_count(); ++z) {
+    if constexpr (D == 3)
+      if (c.quadratic(z)) {
+        // Summed at the nodes: Gershgorin's bound on the assembled mesh (a zone's own bound is
+        // ruled by its worst shape; in a CGAL mesh it is three times too short).
+        if (rows.empty()) rows.assign(c.node_count(), 0.0);
+        const std::array<double, 10> r = quadratic_row_sums(c, z);
+        const std::array<uint32_t, 10> nodes = quadratic_nodes(c, z);
+        for (int k = 0; k < 10; ++k) rows[nodes[k]] += r[k];
+        continue;
+      }
+    const double s = zone_timestep(c, z);
+    for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
+  }
+  for (size_t n = 0; n < rows.size(); ++n)
+    if (rows[n] > 0 && c.mass[n] > 0) dt[n] = std::min(dt[n], 2.0 * std::sqrt(c.mass[n] / rows[n]));
+  return dt;
+}
+
+template <int D>
 double critical_timestep(const ContinuumT<D>& c, double safety) {
-  double dt = 1e300;
-  for (size_t z = 0; z < c.zones.size(); ++z) dt = std::min(dt, zone_timestep(c, z));
+  const std::vector<double> steps = node_steps(c);
+  const double dt = steps.empty() ? 1e300 : *std::min_element(steps.begin(), steps.end());
   return safety * dt;
 }
 
@@ -186,11 +246,22 @@ void initialize_stress(ContinuumT<D>& c, const ZoneStress& s0, const ZoneStress&
   for (size_t z = 0; z < c.zones.size(); ++z) {
     if (!c.materials[c.material[z]].impl->solid()) continue;
     const auto& t = c.zones[z];
+    const auto at = [&](double height) {
+      const double dv = height - v0;
+      return ZoneStress{s0.xx + g.xx * dv, s0.yy + g.yy * dv, s0.xy + g.xy * dv,
+                        s0.zz + g.zz * dv, s0.yz + g.yz * dv, s0.xz + g.xz * dv};
+    };
     double h = 0;
     for (uint32_t n : t) h += c.pos[n][D - 1];
-    const double dv = h / (D + 1.0) - v0;
-    c.stress[z] = {s0.xx + g.xx * dv, s0.yy + g.yy * dv, s0.xy + g.xy * dv,
-                   s0.zz + g.zz * dv, s0.yz + g.yz * dv, s0.xz + g.xz * dv};
+    c.stress[z] = at(h / (D + 1.0));
+    // A quadratic zone's integration points each at their own height.
+    if constexpr (D == 3)
+      if (c.quadratic(z))
+        for (int p = 0; p < 4; ++p) {
+          double hp = 0;
+          for (int k = 0; k < 4; ++k) hp += gauss_coordinate(p, k) * c.pos[t[k]].z();
+          c.gp_stress[z][p] = at(hp);
+        }
   }
 }
 
@@ -222,12 +293,30 @@ std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh) {
   std::map<std::array<uint32_t, 3>, int> count;
   for (const auto& t : mesh.tets)
     for (const auto& f : kFace) ++count[key({t[f[0]], t[f[1]], t[f[2]]})];
+  // A quadratic zone's mid-edge node between two of its corners.
+  const auto mid = [&](size_t z, int i, int j) {
+    for (int e = 0; e < 6; ++e)
+      if ((kTetEdge[e][0] == i && kTetEdge[e][1] == j) ||
+          (kTetEdge[e][0] == j && kTetEdge[e][1] == i))
+        return mesh.mid[z][e];
+    return 0u;
+  };
   std::vector<std::array<uint32_t, 3>> out;
-  for (const auto& t : mesh.tets)
+  for (size_t z = 0; z < mesh.tets.size(); ++z) {
+    const auto& t = mesh.tets[z];
     for (const auto& f : kFace) {
       const std::array<uint32_t, 3> face{t[f[0]], t[f[1]], t[f[2]]};
-      if (count[key(face)] == 1) out.push_back(face);
+      if (count[key(face)] != 1) continue;
+      if (mesh.mid.empty()) {
+        out.push_back(face);
+        continue;
+      }
+      // Four plane triangles: one at each corner, then the middle one.
+      const uint32_t m01 = mid(z, f[0], f[1]), m12 = mid(z, f[1], f[2]), m20 = mid(z, f[2], f[0]);
+      out.push_back({face[0], m01, m20}), out.push_back({m01, face[1], m12});
+      out.push_back({m20, m12, face[2]}), out.push_back({m01, m12, m20});
     }
+  }
   return out;
 }
 
@@ -255,6 +344,14 @@ void zone_forces(ContinuumT<D>& c) {
       w.volume[z] = 0, w.ev[z] = 0;
       continue;
     }
+    // A quadratic zone's whole stage at its integration points (no mixed discretization: zero
+    // volume keeps it out of the averages).
+    if constexpr (D == 3)
+      if (c.quadratic(z)) {
+        quadratic_zone_forces(c, z, w.scale);
+        w.volume[z] = 0, w.ev[z] = 0;
+        continue;
+      }
     const auto& t = c.zones[z];
     const double scaled = kFactorial<D> * zone_volume(c, z);
     w.de[z] = symmetric_gradient<D>(gather<D>(c.vel, t), gradients<D>(c.pos, t), c.dt / scaled);
@@ -272,7 +369,7 @@ void zone_forces(ContinuumT<D>& c) {
   for (size_t z = 0; z < nz; ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
     w.dp[z] = 0;
-    if (!p.impl->solid()) continue;
+    if (!p.impl->solid() || c.quadratic(z)) continue;
     StrainIncrement de = w.de[z];
     if (mixed) {
       const double d = (w.ev_mixed[z] - w.ev[z]) / D;
@@ -294,7 +391,7 @@ void zone_forces(ContinuumT<D>& c) {
     nodal_average<D + 1>(c.zones, w.volume, w.dp, nn, w.node_sum, w.node_weight, w.dp_mixed);
   // Zones: the stress as nodal forces f_i = -V sigma grad N_i.
   for (size_t z = 0; z < nz; ++z) {
-    if (!c.materials[c.material[z]].impl->solid()) continue;
+    if (!c.materials[c.material[z]].impl->solid() || c.quadratic(z)) continue;
     const auto& t = c.zones[z];
     ZoneStress& s = c.stress[z];
     if (plastic) {
@@ -367,6 +464,7 @@ double move_nodes(ContinuumT<D>& c) {
   template void lump_masses(ContinuumT<D>&);                                                     \
   template double zone_timestep(const ContinuumT<D>&, size_t);                                   \
   template double critical_timestep(const ContinuumT<D>&, double);                               \
+  template std::vector<double> node_steps(const ContinuumT<D>&);                                 \
   template void initialize_stress(ContinuumT<D>&, const ZoneStress&, const ZoneStress&, double); \
   template void continuum_cycle(ContinuumT<D>&);                                                 \
   template void zone_forces(ContinuumT<D>&);                                                     \

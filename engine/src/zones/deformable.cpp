@@ -271,11 +271,7 @@ namespace {
 // (a corner node at a joint junction flip-flopped every cycle with the count of one).
 std::vector<double> node_timesteps(const Model& m) {
   const Continuum& c = m.continuum;
-  std::vector<double> dt(c.node_count(), 1e300);
-  for (size_t z = 0; z < c.zone_count(); ++z) {
-    const double s = zone_timestep(c, z);
-    for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
-  }
+  std::vector<double> dt = node_steps(c);
   const double kmax = stiffest_joint_pair(m);
   const Blocks& B = m.blocks;
   if (kmax > 0)

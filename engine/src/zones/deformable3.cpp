@@ -46,7 +46,10 @@ void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, u
   // and whose normal it shares.
   ZoneMesh3 own;
   for (size_t z = 0; z < mesh.tets.size(); ++z)
-    if (mesh.piece.empty() || mesh.piece[z] == piece) own.tets.push_back(mesh.tets[z]);
+    if (mesh.piece.empty() || mesh.piece[z] == piece) {
+      own.tets.push_back(mesh.tets[z]);
+      if (!mesh.mid.empty()) own.mid.push_back(mesh.mid[z]);
+    }
   const uint32_t f0 = B.face_begin[b], f1 = B.face_begin[b + 1];
   std::vector<std::vector<std::array<uint32_t, 3>>> on_face(f1 - f0);
   for (const auto& t : boundary_faces(own)) {
@@ -73,7 +76,7 @@ void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, u
 }  // namespace
 
 double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading,
-                        const std::atomic<bool>* stop) {
+                        const std::atomic<bool>* stop, bool quadratic) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
   // The body's pieces (one for a convex block), in block order: one mesh for all of them.
@@ -97,6 +100,7 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
     for (size_t k : pieces) polys.push_back(B.polyhedron(k));
     mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
   }
+  if (quadratic) make_quadratic(mesh);
   Continuum3& c = m.continuum3;
   const auto zone0 = static_cast<uint32_t>(c.zone_count());
   const uint32_t first = add_mesh(c, mesh, 0);
@@ -164,19 +168,16 @@ void add_contact_forces_to_nodes3(Model& m) {
 
 std::vector<double> node_timesteps3(const Model& m) {
   const Continuum3& c = m.continuum3;
-  std::vector<double> dt(c.node_count(), 1e300);
-  for (size_t z = 0; z < c.zone_count(); ++z) {
-    const double s = zone_timestep(c, z);
-    for (uint32_t n : c.zones[z]) dt[n] = std::min(dt[n], s);
-  }
-  // Surface nodes: a third of each surface triangle around them (as 2D's half of each edge).
+  std::vector<double> dt = node_steps(c);
+  // Surface nodes: their share of each surface triangle around them (a third; on a quadratic
+  // zone's face, the mid-edge nodes' parts: traction_shares), as 2D's half of each edge.
   const double kmax = stiffest_joint_pair(m);
   if (kmax <= 0) return dt;
   std::vector<double> share(c.node_count(), 0.0);
   for (const auto& t : m.blocks3.ftri) {
-    const double area =
-        0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]).norm() / 3.0;
-    for (uint32_t n : t) share[n] += area;
+    const double area = 0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]).norm();
+    const std::array<double, 3> part = traction_shares(t, c.edge_node);
+    for (int k = 0; k < 3; ++k) share[t[k]] += part[k] * area;
   }
   for (size_t n = 0; n < c.node_count(); ++n)
     if (share[n] > 0 && c.mass[n] > 0)
@@ -213,10 +214,16 @@ void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
   };
   for (auto* v : {&c.pos, &c.pos0, &c.vel, &c.force, &c.applied, &c.fixed_vel}) keep(*v, node_map);
   keep(c.mass, node_map), keep(c.inertia, node_map), keep(c.fixity, node_map);
+  if (!c.edge_node.empty()) keep(c.edge_node, node_map);
   keep(c.zones, zone_map), keep(c.stress, zone_map), keep(c.state, zone_map);
   keep(c.material, zone_map);
+  if (!c.mid.empty())
+    keep(c.mid, zone_map), keep(c.gp_stress, zone_map), keep(c.gp_state, zone_map);
   for (auto& t : c.zones)
     for (uint32_t& n : t) n = static_cast<uint32_t>(node_map[n]);
+  for (auto& t : c.mid)
+    for (uint32_t& n : t)
+      if (n != Continuum3::kNoMid) n = static_cast<uint32_t>(node_map[n]);
   for (size_t b = 0; b < B.size(); ++b) {
     if (!B.deformable[b] || doomed[b]) continue;
     const auto first_kept = [](const std::vector<int64_t>& map, uint32_t lo) {

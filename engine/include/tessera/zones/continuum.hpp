@@ -14,6 +14,15 @@
 // measure of its median-dual cell (1/(D+1) of each zone around it), the barycentric counterpart
 // of the chapter's Voronoi cell.
 //
+// Quadratic zones (3D, the chapter's 10-node option, §5.3.1): a tetrahedron with a node at the
+// middle of each edge and the quadratic displacement field of those ten nodes, its stress and
+// state kept at four integration points (Gauss, exact for the quadratic strain energy) with
+// the zone's `stress` their mean and `state` their union. The edges stay straight (the corners
+// map the shape, subparametric); masses are lumped in proportion to the consistent mass
+// matrix's diagonal (1/36 of the zone's mass at each corner, 4/27 at each mid-edge node; the
+// row sums would put negative mass at the corners). No mixed discretization: a quadratic
+// zone's strain varies inside it, which is what the averaging stands in for.
+//
 // Nodal mixed discretization (Detournay & Dzik 2006, as in FLAC3D and 3DEC): uniform-strain
 // simplices lock under plastic flow (too few of their modes deform at constant volume), so each
 // cycle the volumetric part of a zone's strain increment is replaced by the mean over its nodes
@@ -75,10 +84,26 @@ struct ContinuumT {
   uint64_t cycle = 0;
   double ratio = 1.0;       // largest unbalanced force over the mean applied force
   bool nodal_mixed = true;  // nodal mixed discretization (false: plain uniform-strain zones)
+  // Quadratic zones (3D only): empty when there are none, else per zone its mid-edge nodes in
+  // VTK's order (edges 01, 12, 20, 03, 13, 23; kNoMid for a 4-node zone) and its integration
+  // points' stresses and states.
+  std::vector<std::array<uint32_t, 6>> mid;
+  std::vector<std::array<ZoneStress, 4>> gp_stress;
+  std::vector<std::array<uint8_t, 4>> gp_state;
+  std::vector<uint8_t> edge_node;  // per node: 1 at the middle of a quadratic zone's edge
   ZoneScratch scratch;
 
+  static constexpr uint32_t kNoMid = 0xffffffffu;
   size_t node_count() const { return pos.size(); }
   size_t zone_count() const { return zones.size(); }
+  bool quadratic(size_t z) const { return !mid.empty() && mid[z][0] != kNoMid; }
+  // Calls f(node) for each node of zone z: its corners, then its mid-edge nodes if any.
+  template <typename F>
+  void for_zone_nodes(size_t z, F&& f) const {
+    for (uint32_t n : zones[z]) f(n);
+    if (quadratic(z))
+      for (uint32_t n : mid[z]) f(n);
+  }
 };
 using Continuum = ContinuumT<2>;   // triangles, plane strain
 using Continuum3 = ContinuumT<3>;  // tetrahedra
@@ -86,13 +111,38 @@ using Continuum3 = ContinuumT<3>;  // tetrahedra
 // Appends a zone mesh as free nodes and zones of one material; returns the first new node.
 uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material);
 uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material);
+// Makes a tetrahedral mesh quadratic: a node at the middle of every edge (one per edge, shared
+// by the zones around it), listed in `mesh.mid` per zone in VTK's order; surface flags follow.
+void make_quadratic(ZoneMesh3& mesh);
+// How a surface triangle's traction (and contact area) is shared among its three nodes: a third
+// each; a piece of a quadratic zone's face gives it to its mid-edge nodes in equal parts, which
+// for the four pieces of a face is the consistent load of a uniform traction on a 6-node
+// triangle (none at the corners, a third of the force at each mid-edge node).
+inline std::array<double, 3> traction_shares(const std::array<uint32_t, 3>& t,
+                                             const std::vector<uint8_t>& is_mid) {
+  int mids = 0;
+  if (!is_mid.empty())
+    for (uint32_t n : t) mids += is_mid[n];
+  std::array<double, 3> share;
+  for (int k = 0; k < 3; ++k) share[k] = mids == 0 ? 1.0 / 3.0 : is_mid[t[k]] ? 1.0 / mids : 0.0;
+  return share;
+}
+// Sets zone z's stress (and, for a quadratic zone, its integration points') and state.
+void set_zone_stress(Continuum3& c, size_t z, const ZoneStress& s, uint8_t state);
+void set_zone_stress(Continuum& c, size_t z, const ZoneStress& s, uint8_t state);
 // Lumped nodal masses from the zones' densities and volumes (after meshes and material changes).
 template <int D>
 void lump_masses(ContinuumT<D>& c);
-// A zone's stable step: its height over the P-wave speed (1e300 for a null zone).
+// A zone's stable step: its height over the P-wave speed (1e300 for a null zone); a quadratic
+// zone's, Gershgorin's bound for the zone alone at its worst node (quadratic_zones.hpp).
 template <int D>
 double zone_timestep(const ContinuumT<D>& c, size_t z);
-// Stable time step times `safety`: the smallest zone height over the P-wave speed.
+// Each node's stable step from its zones (1e300 for a node with none): the smallest of its
+// 4-node (3-node) zones' steps; where quadratic zones meet, Gershgorin's bound on the assembled
+// mesh, 2 sqrt(M / R): the node's mass over the sum of its zones' largest stiffness row sums.
+template <int D>
+std::vector<double> node_steps(const ContinuumT<D>& c);
+// Stable time step times `safety`: the smallest of the nodes' steps.
 template <int D>
 double critical_timestep(const ContinuumT<D>& c, double safety = 0.5);
 // Stress in every zone: uniform `s0`, plus `gradient` times the height of the zone's centroid
@@ -141,7 +191,8 @@ double move_nodes(ContinuumT<D>& c);
 // Boundary edges of a mesh (node pairs with the domain on their left), in mesh node numbers.
 std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh);
 // Boundary triangles of a tetrahedral mesh (counter-clockwise seen from outside), in mesh node
-// numbers, in the order of the tetrahedra.
+// numbers, in the order of the tetrahedra; a quadratic mesh's are each split into four at the
+// mid-edge nodes (the corner triangles, then the middle one), as contacts and pictures use them.
 std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh);
 
 // The nodal mixed discretization's average of a zone field over simplices of N nodes (3:
@@ -192,6 +243,12 @@ void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_no
 template <typename Pred>
 void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_node,
                            const ZoneStress& s, Pred on_face) {
+  std::vector<uint8_t> is_mid;
+  if (!mesh.mid.empty()) {
+    is_mid.assign(mesh.nodes.size(), 0);
+    for (const auto& m : mesh.mid)
+      for (uint32_t n : m) is_mid[n] = 1;
+  }
   for (const auto& f : boundary_faces(mesh)) {
     const uint32_t a = first_node + f[0], b = first_node + f[1], d = first_node + f[2];
     if (!on_face(c.pos[a], c.pos[b], c.pos[d])) continue;
@@ -200,7 +257,8 @@ void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_
     const Vec3 t(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
                  s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
                  s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
-    c.applied[a] += t / 3.0, c.applied[b] += t / 3.0, c.applied[d] += t / 3.0;
+    const std::array<double, 3> share = traction_shares(f, is_mid);
+    c.applied[a] += share[0] * t, c.applied[b] += share[1] * t, c.applied[d] += share[2] * t;
   }
 }
 

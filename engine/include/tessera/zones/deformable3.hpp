@@ -16,17 +16,18 @@ namespace tessera {
 // piece of a joined (concave) body zones the whole body as one mesh that conforms across the
 // faces between its pieces (they share nodes: no joint there); each piece keeps its own zones,
 // material and face triangles, and all share the body's node range. Returns the smallest
-// dihedral angle of its zones (degrees). Throws std::invalid_argument if a material has no
-// elastic constants or the block is deformable already, and ZoningStopped (the model
-// unchanged) when `stop` is set while it meshes.
+// dihedral angle of its zones (degrees). `quadratic`: 10-node zones (a node at the middle of every
+// zone edge; each face's surface triangles are the zones' faces split in four). Throws
+// std::invalid_argument if a material has no elastic constants or the block is deformable already,
+// and ZoningStopped (the model unchanged) when `stop` is set while it meshes.
 double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading = nullptr,
-                        const std::atomic<bool>* stop = nullptr);
+                        const std::atomic<bool>* stop = nullptr, bool quadratic = false);
 // Refreshes the corners and face planes of every deformable 3D block from its nodes.
 void update_deformable_world3(Model& m);
 // Adds the sub-contact forces on deformable 3D blocks to their nodes, in a fixed order per block.
 void add_contact_forces_to_nodes3(Model& m);
-// Each node's own stable step (1e300 for a massless node): the smallest of its zones', and for
-// a surface node its mass against the stiffest joint pair over its share of the surface.
+// Each node's own stable step (1e300 for a massless node): its zones' (node_steps), and for a
+// surface node its mass against the stiffest joint pair over its share of the surface.
 std::vector<double> node_timesteps3(const Model& m);
 // Drops the nodes and zones of the doomed blocks (before Blocks3::remove with the same flags).
 void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed);

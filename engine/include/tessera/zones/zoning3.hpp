@@ -28,6 +28,7 @@ struct ZoneMesh3 {
   std::vector<uint8_t> on_boundary;           // per node: lies on the block's surface
   std::vector<std::array<uint32_t, 4>> tets;  // positive volume: (b - a) x (c - a) . (d - a) > 0
   std::vector<uint32_t> piece;                // per tet: the piece it fills (zone_pieces), or 0
+  std::vector<std::array<uint32_t, 6>> mid;   // quadratic meshes: mid-edge nodes (make_quadratic)
   double min_dihedral = 0.0;                  // smallest dihedral angle of any zone, degrees
   double max_edge = 0.0;                      // longest zone edge
 };
