@@ -100,7 +100,7 @@ int run_zones(ContinuumT<D>& c, const std::string& scene, double edge, uint64_t 
   return 0;
 }
 
-int zone_scene(const std::string& scene, double edge, uint64_t cycles) {
+int zone_scene(const std::string& scene, double edge, uint64_t cycles, int order) {
   const auto t0 = std::chrono::steady_clock::now();
   auto since = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -113,8 +113,10 @@ int zone_scene(const std::string& scene, double edge, uint64_t cycles) {
   }
   if (edge <= 0) edge = 0.36;
   Continuum3 c;
-  add_mesh(c, zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 16)), edge), 0);
-  return run_zones(c, scene, edge, cycles, since());
+  ZoneMesh3 mesh = zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 16)), edge);
+  if (order == 2) make_quadratic(mesh);
+  add_mesh(c, mesh, 0);
+  return run_zones(c, order == 2 ? scene + "-order2" : scene, edge, cycles, since());
 }
 
 }  // namespace
@@ -122,7 +124,7 @@ int zone_scene(const std::string& scene, double edge, uint64_t cycles) {
 int main(int argc, char** argv) {
   CLI::App app{"Tessera benchmarks"};
   std::string scene = "wall";
-  int cols = 100, rows = 50, threads = 1;
+  int cols = 100, rows = 50, threads = 1, order = 1;
   uint64_t cycles = 1000;
   double ratio = 0.0;
   double edge = 0.0;
@@ -130,6 +132,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"wall", "wall3d", "zones2d", "column3d"}));
   app.add_option("--edge", edge, "Zone size of zones2d and column3d (default 0.2 and 0.36 m)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--order", order, "column3d: 1 (4-node zones, default) or 2 (10-node)")
+      ->check(CLI::IsMember({1, 2}));
   app.add_option("--cols", cols, "Bricks per course")->check(CLI::PositiveNumber);
   app.add_option("--rows", rows, "Courses")->check(CLI::PositiveNumber);
   app.add_option("--cycles", cycles, "Cycles to run");
@@ -138,7 +142,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   set_thread_count(threads);
-  if (scene == "zones2d" || scene == "column3d") return zone_scene(scene, edge, cycles);
+  if (scene == "zones2d" || scene == "column3d") return zone_scene(scene, edge, cycles, order);
   Model m = scene == "wall3d" ? wall3d_scene(cols, rows) : wall_scene(cols, rows);
   Profile profile;
   m.options.profile = &profile;

@@ -123,7 +123,8 @@ DialogSpec spec(const QString& name) {
              {"fine", "Finer edge near a point", "m", "", ""},
              {"near", "Near", "x,y m", "", ""},
              {"radius", "Within", "m", "", ""},
-             {"growth", "Growth away from it", "", "", "e.g. 0.3"}},
+             {"growth", "Growth away from it", "", "", "e.g. 0.3"},
+             {"order", "Zone order", "1 or 2", "", "2: 10-node tetrahedra (3D models)"}},
             true};
   if (name == "boundary")
     return {"Boundary condition on nodes",
