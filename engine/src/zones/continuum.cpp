@@ -21,8 +21,8 @@ using VecD = typename ContinuumT<D>::Vec;
 // A zone's shape-function gradients on `pos`, each times D! times its measure: in 2D the edge
 // opposite each node turned outward, in 3D the rows of the Jacobian's adjugate.
 template <int D>
-std::array<VecD<D>, D + 1> gradients(const std::vector<VecD<D>>& pos,
-                                     const typename ContinuumT<D>::Zone& t) {
+[[gnu::always_inline]] inline std::array<VecD<D>, D + 1> gradients(
+    const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zone& t) {
   std::array<VecD<D>, D + 1> g;
   if constexpr (D == 2) {
     for (int k = 0; k < 3; ++k) {
@@ -40,7 +40,8 @@ std::array<VecD<D>, D + 1> gradients(const std::vector<VecD<D>>& pos,
 
 // The measure (area, volume) of a zone with corners in `pos`.
 template <int D>
-double measure(const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zone& t) {
+[[gnu::always_inline]] inline double measure(const std::vector<VecD<D>>& pos,
+                                             const typename ContinuumT<D>::Zone& t) {
   if constexpr (D == 2)
     return 0.5 * cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]);
   else
@@ -49,8 +50,8 @@ double measure(const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zo
 
 // The symmetric part of sum_k u_k g_k^T times `f`, as a strain (tensor shears).
 template <int D>
-StrainIncrement symmetric_gradient(const std::array<VecD<D>, D + 1>& u,
-                                   const std::array<VecD<D>, D + 1>& g, double f) {
+[[gnu::always_inline]] inline StrainIncrement symmetric_gradient(
+    const std::array<VecD<D>, D + 1>& u, const std::array<VecD<D>, D + 1>& g, double f) {
   Eigen::Matrix<double, D, D> l = Eigen::Matrix<double, D, D>::Zero();
   for (int k = 0; k <= D; ++k)
     for (int i = 0; i < D; ++i)
@@ -74,9 +75,9 @@ double trace(const ZoneStress& s) {
 
 // The zone's own values of `v` (node velocities or displacements) gathered in zone order.
 template <int D>
-std::array<VecD<D>, D + 1> gather(const std::vector<VecD<D>>& v,
-                                  const typename ContinuumT<D>::Zone& t,
-                                  const std::vector<VecD<D>>* minus = nullptr) {
+[[gnu::always_inline]] inline std::array<VecD<D>, D + 1> gather(
+    const std::vector<VecD<D>>& v, const typename ContinuumT<D>::Zone& t,
+    const std::vector<VecD<D>>* minus = nullptr) {
   std::array<VecD<D>, D + 1> out;
   for (int k = 0; k <= D; ++k) {
     out[k] = v[t[k]];
@@ -353,7 +354,7 @@ void zone_forces(ContinuumT<D>& c) {
         continue;
       }
     const auto& t = c.zones[z];
-    const double scaled = kFactorial<D> * zone_volume(c, z);
+    const double scaled = kFactorial<D> * measure<D>(c.pos, t);
     w.de[z] = symmetric_gradient<D>(gather<D>(c.vel, t), gradients<D>(c.pos, t), c.dt / scaled);
     w.volume[z] = scaled / kFactorial<D>, w.ev[z] = trace<D>(w.de[z]);
   }
