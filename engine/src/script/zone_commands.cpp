@@ -1,5 +1,6 @@
 // Script commands of deformable blocks: zone, boundary (node conditions and stresses), insitu.
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "tessera/core/insitu.hpp"
@@ -34,6 +35,13 @@ uint8_t axis_bits(const std::string& axes, int dim) {
     bits |= node_fix_bit(k);
   }
   return bits;
+}
+
+// A point as a script writes it, x,y,z.
+std::string point_text(const Vec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.4g,%.4g,%.4g", p.x(), p.y(), p.z());
+  return text;
 }
 
 // Holds, frees or drives the nodes in the box; returns how many.
@@ -123,12 +131,15 @@ void Interpreter::cmd_zone(Args& a) {
     if (three) {
       Continuum3& c = model_.continuum3;
       const size_t before = c.zone_count();
-      double worst = 180;
+      ZoningReport worst;
       for (size_t b : sel) {
         if (model_.blocks3.deformable[b]) continue;
         try {
-          worst = std::min(worst, make_deformable3(model_, b, edge, graded ? &grade3 : nullptr,
-                                                   stop_, order == 2));
+          const ZoningReport r =
+              make_deformable3(model_, b, edge, graded ? &grade3 : nullptr, stop_, order == 2);
+          if (r.min_dihedral < worst.min_dihedral)
+            worst.min_dihedral = r.min_dihedral, worst.worst_at = r.worst_at;
+          worst.poor += r.poor;
         } catch (const std::invalid_argument& e) {
           fail("block " + std::to_string(model_.blocks3.id[b]) + ": " + e.what());
         } catch (const ZoningStopped&) {
@@ -143,7 +154,15 @@ void Interpreter::cmd_zone(Args& a) {
         log("zone: " + std::to_string(c.zone_count() - before) +
             (order == 2 ? " 10-node tetrahedra, " : " tetrahedra, ") +
             std::to_string(c.node_count()) + " nodes in all; smallest dihedral angle " +
-            std::to_string(worst).substr(0, 5) + " degrees");
+            std::to_string(worst.min_dihedral).substr(0, 5) + " degrees");
+      if (worst.poor > 0) {
+        const Vec3& p = worst.worst_at;
+        log("warning: " + std::to_string(worst.poor) + " zones have a dihedral angle under " +
+            std::to_string(static_cast<int>(ZoneMesh3::kPoorDihedral)) +
+            " degrees (the smallest near " + point_text(p) +
+            "): answers near such slivers are poor (a plastic zone's extent can be out by a "
+            "third); a slightly different edge= or fine= usually avoids them");
+      }
       overlap_checked_ = false;
       return;
     }

@@ -338,6 +338,7 @@ void zone_forces(ContinuumT<D>& c) {
   }
   w.de.resize(nz), w.volume.resize(nz), w.ev.resize(nz), w.ev_mixed.resize(nz);
   w.dp.resize(nz), w.dp_mixed.resize(nz), w.node_sum.resize(nn), w.node_weight.resize(nn);
+  w.linear.assign(nz, 0);
   // Zones: strain increment from the nodal velocities (uniform gradient of the linear field).
   for (size_t z = 0; z < nz; ++z) {
     const ZoneProperties& p = c.materials[c.material[z]];
@@ -357,6 +358,7 @@ void zone_forces(ContinuumT<D>& c) {
     const double scaled = kFactorial<D> * measure<D>(c.pos, t);
     w.de[z] = symmetric_gradient<D>(gather<D>(c.vel, t), gradients<D>(c.pos, t), c.dt / scaled);
     w.volume[z] = scaled / kFactorial<D>, w.ev[z] = trace<D>(w.de[z]);
+    w.linear[z] = 1;
   }
   // Nodal mixed discretization of the strain: volumetric increments averaged at the nodes.
   const bool mixed = c.nodal_mixed;
@@ -368,9 +370,9 @@ void zone_forces(ContinuumT<D>& c) {
   // volumetric increment: (K + G/3) de_vol for a triangle's in-plane mean, K de_vol in 3D.
   bool plastic = false;
   for (size_t z = 0; z < nz; ++z) {
-    const ZoneProperties& p = c.materials[c.material[z]];
     w.dp[z] = 0;
-    if (!p.impl->solid() || c.quadratic(z)) continue;
+    if (!w.linear[z]) continue;
+    const ZoneProperties& p = c.materials[c.material[z]];
     StrainIncrement de = w.de[z];
     if (mixed) {
       const double d = (w.ev_mixed[z] - w.ev[z]) / D;
@@ -392,7 +394,7 @@ void zone_forces(ContinuumT<D>& c) {
     nodal_average<D + 1>(c.zones, w.volume, w.dp, nn, w.node_sum, w.node_weight, w.dp_mixed);
   // Zones: the stress as nodal forces f_i = -V sigma grad N_i.
   for (size_t z = 0; z < nz; ++z) {
-    if (!c.materials[c.material[z]].impl->solid() || c.quadratic(z)) continue;
+    if (!w.linear[z]) continue;
     const auto& t = c.zones[z];
     ZoneStress& s = c.stress[z];
     if (plastic) {

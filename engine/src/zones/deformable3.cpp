@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "tessera/core/timestep.hpp"
@@ -75,8 +76,8 @@ void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, u
 
 }  // namespace
 
-double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading,
-                        const std::atomic<bool>* stop, bool quadratic) {
+ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3* grading,
+                              const std::atomic<bool>* stop, bool quadratic) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
   // The body's pieces (one for a convex block), in block order: one mesh for all of them.
@@ -100,6 +101,15 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
     for (size_t k : pieces) polys.push_back(B.polyhedron(k));
     mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
   }
+  // A zone of no volume has no stiffness and no stable step: refused, with where it is.
+  if (mesh.min_dihedral < 1e-3) {
+    char at[96];
+    std::snprintf(at, sizeof at, "%.4g,%.4g,%.4g", mesh.worst_at.x(), mesh.worst_at.y(),
+                  mesh.worst_at.z());
+    throw std::invalid_argument(
+        std::string("the mesher left a flat zone (no volume) inside it at ") + at +
+        ": try a slightly different edge= or fine=");
+  }
   if (quadratic) make_quadratic(mesh);
   Continuum3& c = m.continuum3;
   const auto zone0 = static_cast<uint32_t>(c.zone_count());
@@ -121,7 +131,7 @@ double make_deformable3(Model& m, size_t b, double max_edge, const ZoneGrading3*
   m.contacts3.clear();
   m.block_contact_begin.clear();
   m.touch();
-  return mesh.min_dihedral;
+  return {mesh.min_dihedral, mesh.worst_at, mesh.poor};
 }
 
 void update_deformable_world3(Model& m) {

@@ -196,6 +196,60 @@ C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
                       params::cell_radius_edge_ratio = 2.0, params::cell_size = cell));
 }
 
+// The mesher may leave a flat zone on the surface: four nodes on one face of the block, no
+// volume (its two outer faces and its two inner ones triangulate the same quadrilateral). Such
+// a cap is dropped: the zones behind it then show its inner faces, the same plane, and the
+// mesh loses no volume. (A flat zone inside the block cannot go so simply; measure_quality
+// reports it.)
+void drop_flat_caps(ZoneMesh3& mesh) {
+  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  const auto key = [](const std::array<uint32_t, 4>& t, const int* f) {
+    std::array<uint32_t, 3> k{t[f[0]], t[f[1]], t[f[2]]};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    std::map<std::array<uint32_t, 3>, int> uses;
+    for (const auto& t : mesh.tets)
+      for (const auto& f : kFace) ++uses[key(t, f)];
+    std::vector<uint8_t> drop(mesh.tets.size(), 0);
+    for (size_t z = 0; z < mesh.tets.size(); ++z) {
+      const auto& t = mesh.tets[z];
+      double longest = 0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          longest = std::max(longest, (mesh.nodes[t[i]] - mesh.nodes[t[j]]).norm());
+      const Vec3 &a = mesh.nodes[t[0]], &b = mesh.nodes[t[1]], &c = mesh.nodes[t[2]];
+      const double six_v = (b - a).cross(c - a).dot(mesh.nodes[t[3]] - a);
+      int outer = 0;
+      for (const auto& f : kFace) outer += uses[key(t, f)] == 1;
+      drop[z] = std::abs(six_v) <= 1e-9 * longest * longest * longest && outer >= 2;
+      dropped = dropped || drop[z];
+    }
+    size_t kept = 0;
+    for (size_t z = 0; z < mesh.tets.size(); ++z)
+      if (!drop[z]) mesh.tets[kept] = mesh.tets[z], mesh.piece[kept] = mesh.piece[z], ++kept;
+    mesh.tets.resize(kept), mesh.piece.resize(kept);
+  }
+}
+
+// The zones' smallest dihedral angle and longest edge, and those under kPoorDihedral degrees.
+void measure_quality(ZoneMesh3& mesh) {
+  mesh.min_dihedral = 180.0, mesh.max_edge = 0.0, mesh.poor = 0;
+  for (const auto& t : mesh.tets) {
+    std::array<Vec3, 4> at;
+    for (int k = 0; k < 4; ++k) at[k] = mesh.nodes[t[k]];
+    const double angle = min_dihedral_angle(at);
+    if (angle < mesh.min_dihedral)
+      mesh.min_dihedral = angle, mesh.worst_at = 0.25 * (at[0] + at[1] + at[2] + at[3]);
+    mesh.poor += angle < ZoneMesh3::kPoorDihedral;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        mesh.max_edge = std::max(mesh.max_edge, (at[i] - at[j]).norm());
+  }
+}
+
 // Cells of the mesh as zones, each with its piece (0 for one block). The mesher's cells come in
 // an order that depends on memory addresses, its vertices not: nodes are numbered in coordinate
 // order and zones sorted (by piece, then nodes), so the numbering is the same on every run.
@@ -221,7 +275,6 @@ ZoneMesh3 zones_of(const C3t3& c3t3,
     mesh.nodes.push_back(point(v));
     mesh.on_boundary.push_back(c3t3.in_dimension(v) < 3);
   }
-  mesh.min_dihedral = 180.0;
   std::vector<std::pair<uint32_t, std::array<uint32_t, 4>>> tets;
   for (const auto& [piece, c] : cells) {
     std::array<uint32_t, 4> tet;
@@ -229,17 +282,14 @@ ZoneMesh3 zones_of(const C3t3& c3t3,
     std::sort(tet.begin(), tet.end());
     std::array<Vec3, 4> at;
     for (int k = 0; k < 4; ++k) at[k] = mesh.nodes[tet[k]];
-    if ((at[1] - at[0]).cross(at[2] - at[0]).dot(at[3] - at[0]) < 0)
-      std::swap(tet[2], tet[3]), std::swap(at[2], at[3]);
+    if ((at[1] - at[0]).cross(at[2] - at[0]).dot(at[3] - at[0]) < 0) std::swap(tet[2], tet[3]);
     tets.emplace_back(piece, tet);
-    mesh.min_dihedral = std::min(mesh.min_dihedral, min_dihedral_angle(at));
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        mesh.max_edge = std::max(mesh.max_edge, (at[i] - at[j]).norm());
   }
   std::sort(tets.begin(), tets.end());
   for (const auto& [p, t] : tets) mesh.piece.push_back(p), mesh.tets.push_back(t);
+  drop_flat_caps(mesh);
   if (mesh.tets.empty()) throw std::invalid_argument("the block is too thin to zone");
+  measure_quality(mesh);
   return mesh;
 }
 

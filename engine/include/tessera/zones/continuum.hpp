@@ -54,8 +54,9 @@ constexpr uint8_t node_fix_bit(int k) {
 // Work arrays of a cycle, kept with the model (not shared between models): the size of the
 // forces meeting at each node (for the unbalanced-force ratio), and per zone the strain
 // increment, volume, volumetric increment, isotropic plastic correction and their nodal
-// averages, with per-node sums and weights.
+// averages, with per-node sums and weights; which zones the linear passes take (solid 4-node).
 struct ZoneScratch {
+  std::vector<uint8_t> linear;
   std::vector<double> scale;
   std::vector<StrainIncrement> de;
   std::vector<double> volume, ev, ev_mixed, dp, dp_mixed, node_sum, node_weight;

@@ -30,14 +30,21 @@ struct ZoneMesh3 {
   std::vector<uint32_t> piece;                // per tet: the piece it fills (zone_pieces), or 0
   std::vector<std::array<uint32_t, 6>> mid;   // quadratic meshes: mid-edge nodes (make_quadratic)
   double min_dihedral = 0.0;                  // smallest dihedral angle of any zone, degrees
+  Vec3 worst_at = Vec3::Zero();               // the centre of the zone with that angle
+  size_t poor = 0;                            // zones with a dihedral angle under kPoorDihedral
   double max_edge = 0.0;                      // longest zone edge
+  // Zones this flat stiffen and scatter the answer near them (a plastic zone's extent was out
+  // by 30% with 77 zones under 5 degrees in a Salencon slab of 22,000; none under 9.6: 0.8%).
+  static constexpr double kPoorDihedral = 5.0;
 };
 
 // Tetrahedra filling a closed polyhedron (convex or not), edges of about `max_edge` (the block's
 // edges split into pieces of at most `max_edge`, zones' circumradii at most that of a regular
 // tetrahedron of that edge; the longest zone edge comes out under 2 `max_edge`), finer near a
 // grading's centre. Every block corner is a node; the zones' volumes add up to the
-// block's. The same input gives the same mesh. Throws std::invalid_argument for a block that
+// block's; flat zones the mesher leaves on the surface (four nodes on one face) are dropped,
+// and the mesh's quality is measured (`min_dihedral`, `worst_at`, `poor`). The same input gives
+// the same mesh. Throws std::invalid_argument for a block that
 // is not a closed, outward-facing surface, a size that is not positive, or one that would make
 // more than `max_zones` zones.
 // `stop`, when given and set from another thread, ends the meshing by ZoningStopped.
