@@ -651,6 +651,19 @@ class TestDeformable3 : public QObject {
     QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
                          "jset dip=30 ddir=0 spacing=0.5",
                   "is deformable: cut blocks before"));
+    // A failure inside CGAL's mesher (a jointed tunnel whose cuts meet at shallow angles) names
+    // the block, and the dump CGAL writes into the working directory is cleared away.
+    QVERIFY(
+        fails("dimension 3\ntolerance 0.01\nmaterial define rock density=2700 E=10e9 "
+              "nu=0.25\njoint define j kn=2e10 ks=1e10 friction=32\njoint assign j\n"
+              "region 0,0,-10.5 10.5,18,10.5 group=rock material=rock\n"
+              "jset dip=0 ddir=0 spacing=12 origin=0,0,6 name=bedding\n"
+              "jset dip=90 ddir=0 spacing=4.5 origin=0,0,0 name=cross\n"
+              "tunnel circle centre=0,0,0 axis=0,1,0 radius=3 length=9 rounds=3 segments=16 "
+              "name=tunnel group=tunnel join\n"
+              "zone generate edge=4 fine=0.8 near=0,4.5,0 radius=4 growth=0.4",
+              "block 20: CGAL's mesher failed"));
+    QVERIFY(!QFile::exists("dump-bug.mesh") && !QFile::exists("dump-bug.binary.cgal"));
   }
 };
 

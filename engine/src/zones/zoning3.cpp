@@ -14,8 +14,10 @@
 #include <CGAL/make_mesh_3.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <numbers>
@@ -180,8 +182,24 @@ C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
     // default stops it after as much CPU time as the refinement took, so a busy machine meshed
     // the same block differently (1659 zones against 1656).
     CGAL::get_default_random() = CGAL::Random(0);
-    return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
-                                   params::perturb(params::time_limit = 0), params::no_exude());
+    // A failure inside CGAL (e.g. "... is already inserted on surface", met where cuts meet at
+    // shallow angles) becomes the command's error; the debugging dump CGAL then writes into the
+    // working directory (dump-bug.mesh, dump-bug.binary.cgal) is removed if it was not there.
+    const bool had_dump = std::filesystem::exists("dump-bug.mesh");
+    try {
+      return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
+                                     params::perturb(params::time_limit = 0), params::no_exude());
+    } catch (const CGAL::Failure_exception& e) {
+      if (!had_dump) {
+        std::error_code ec;
+        std::filesystem::remove("dump-bug.mesh", ec);
+        std::filesystem::remove("dump-bug.binary.cgal", ec);
+      }
+      std::string why = e.message().empty() ? e.expression() : e.message();
+      while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
+      throw std::invalid_argument("CGAL's mesher failed (" + why +
+                                  "): try a slightly different edge= or fine=");
+    }
   };
   if (!graded_distance)
     return run(Criteria(params::edge_size = edge, params::facet_angle = 25.0,
