@@ -1,6 +1,7 @@
 // Every example runs headless through the tessera executable; its results are checked as
 // numbers against closed-form estimates, with tolerances, never as text.
 #include <QDir>
+#include <QGuiApplication>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,6 +19,8 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "support.hpp"
 
 namespace {
 
@@ -660,5 +663,12 @@ class TestExamples : public QObject {
   }
 };
 
-QTEST_MAIN(TestExamples)  // a QGuiApplication: figures are drawn back to check them
+// A QGuiApplication (figures are drawn back to check them) and run_tests, which takes --skip:
+// the 3D tunnel example runs as a ctest entry of its own.
+int main(int argc, char** argv) {
+  QGuiApplication app(argc, argv);
+  app.setAttribute(Qt::AA_Use96Dpi, true);
+  TestExamples test;
+  return tessera::test::run_tests(test, argc, argv);
+}
 #include "test_examples.moc"
