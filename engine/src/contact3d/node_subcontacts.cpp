@@ -34,19 +34,6 @@ Vec3 barycentric(const std::array<Vec2d, 3>& p, const Vec2d& x) {
   return Vec3(area2(x, p[1], p[2]), area2(p[0], x, p[2]), area2(p[0], p[1], x)) / whole;
 }
 
-// Weights l on surface triangle t kept, on a piece of a quadratic zone's face, to its mid-edge
-// nodes (renormalised; equal if l has none there): over a uniform traction this gives the
-// consistent loads (traction_shares), none at the corners.
-Vec3 consistent_weights(const std::array<uint32_t, 3>& t, Vec3 l,
-                        const std::vector<uint8_t>& edge_node) {
-  if (edge_node.empty() || !(edge_node[t[0]] | edge_node[t[1]] | edge_node[t[2]])) return l;
-  for (int i = 0; i < 3; ++i)
-    if (!edge_node[t[i]]) l[i] = 0.0;
-  if (!(l.sum() > 0.0))
-    for (int i = 0; i < 3; ++i) l[i] = edge_node[t[i]];
-  return l / l.sum();
-}
-
 // Where the line through x along n meets the plane m . y = d: the parameter t of y = x + t n.
 double along(const Vec3& x, const Vec3& n, const Vec3& mn, double d) {
   return (d - mn.dot(x)) / mn.dot(n);
@@ -126,7 +113,7 @@ void side_subcontacts(const Model& m, Contact3& c, const Vec3& n, int side, doub
     centroid /= 3.0 * a2;
     // (A piece of a quadratic zone's face: its area to its mid-edge nodes only, so that a
     // uniform pressure closes the joint uniformly.)
-    const Vec3 lambda = consistent_weights(t, barycentric(p, centroid).cwiseMax(0.0), z.edge_node);
+    const Vec3 lambda = mid_edge_weights(t, barycentric(p, centroid).cwiseMax(0.0), z.edge_node);
     const double area = 0.5 * a2 * share / lambda.sum();
     for (int i = 0; i < 3; ++i)
       if (lambda[i] > 0.0) w.share.emplace_back(t[i], area * lambda[i]);
@@ -155,7 +142,7 @@ void side_subcontacts(const Model& m, Contact3& c, const Vec3& n, int side, doub
           best = l.minCoeff();
           for (int j = 0; j < 3; ++j) s.tri[j] = static_cast<int32_t>(t[j]);
           // (its force and the velocity it sees in the same weights; the gap is to the plane)
-          s.weight = consistent_weights(t, l.cwiseMax(0.0) / l.cwiseMax(0.0).sum(), z.edge_node);
+          s.weight = mid_edge_weights(t, l.cwiseMax(0.0) / l.cwiseMax(0.0).sum(), z.edge_node);
         }
       }
     }

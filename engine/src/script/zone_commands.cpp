@@ -1,6 +1,5 @@
 // Script commands of deformable blocks: zone, boundary (node conditions and stresses), insitu.
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "tessera/core/insitu.hpp"
@@ -35,13 +34,6 @@ uint8_t axis_bits(const std::string& axes, int dim) {
     bits |= node_fix_bit(k);
   }
   return bits;
-}
-
-// A point as a script writes it, x,y,z.
-std::string point_text(const Vec3& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "%.4g,%.4g,%.4g", p.x(), p.y(), p.z());
-  return text;
 }
 
 // Holds, frees or drives the nodes in the box; returns how many.
@@ -313,7 +305,7 @@ size_t Interpreter::boundary_stress3(const NodeBox& box, const ZoneStress& s, in
       const Vec3 tr(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
                     s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
                     s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
-      const std::array<double, 3> share = traction_shares(t, c.edge_node);
+      const Vec3 share = traction_shares(t, c.edge_node);
       for (int i = 0; i < 3; ++i) c.applied[t[i]] += share[i] * tr;
       ++count;
     }

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "tessera/core/timestep.hpp"
@@ -102,14 +101,10 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGra
     mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
   }
   // A zone of no volume has no stiffness and no stable step: refused, with where it is.
-  if (mesh.min_dihedral < 1e-3) {
-    char at[96];
-    std::snprintf(at, sizeof at, "%.4g,%.4g,%.4g", mesh.worst_at.x(), mesh.worst_at.y(),
-                  mesh.worst_at.z());
-    throw std::invalid_argument(
-        std::string("the mesher left a flat zone (no volume) inside it at ") + at +
-        ": try a slightly different edge= or fine=");
-  }
+  if (mesh.min_dihedral < 1e-3)
+    throw std::invalid_argument("the mesher left a flat zone (no volume) inside it at " +
+                                point_text(mesh.worst_at) +
+                                ": try a slightly different edge= or fine=");
   if (quadratic) make_quadratic(mesh);
   Continuum3& c = m.continuum3;
   const auto zone0 = static_cast<uint32_t>(c.zone_count());
@@ -186,7 +181,7 @@ std::vector<double> node_timesteps3(const Model& m) {
   std::vector<double> share(c.node_count(), 0.0);
   for (const auto& t : m.blocks3.ftri) {
     const double area = 0.5 * (c.pos[t[1]] - c.pos[t[0]]).cross(c.pos[t[2]] - c.pos[t[0]]).norm();
-    const std::array<double, 3> part = traction_shares(t, c.edge_node);
+    const Vec3 part = traction_shares(t, c.edge_node);
     for (int k = 0; k < 3; ++k) share[t[k]] += part[k] * area;
   }
   for (size_t n = 0; n < c.node_count(); ++n)

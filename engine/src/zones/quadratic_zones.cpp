@@ -32,14 +32,17 @@ double gauss_coordinate(int point, int corner) {
   return point == corner ? kGaussA : kGaussB;
 }
 
-std::array<Vec3, 10> quadratic_gradients(const std::array<Vec3, 4>& x, int point, double* volume) {
-  // Gradients of the volume coordinates: the linear tetrahedron's, constant in the zone.
+std::array<Vec3, 4> volume_gradients(const std::array<Vec3, 4>& x, double& volume) {
   const Vec3 e1 = x[1] - x[0], e2 = x[2] - x[0], e3 = x[3] - x[0];
   const double six_v = e1.cross(e2).dot(e3);
   std::array<Vec3, 4> dl;
   dl[1] = e2.cross(e3) / six_v, dl[2] = e3.cross(e1) / six_v, dl[3] = e1.cross(e2) / six_v;
   dl[0] = -(dl[1] + dl[2] + dl[3]);
-  if (volume) *volume = six_v / 6.0;
+  volume = six_v / 6.0;
+  return dl;
+}
+
+std::array<Vec3, 10> quadratic_gradients(const std::array<Vec3, 4>& dl, int point) {
   // Corners N = L (2L - 1); mid-edge nodes N = 4 Li Lj.
   std::array<Vec3, 10> g;
   for (int k = 0; k < 4; ++k) g[k] = (4.0 * gauss_coordinate(point, k) - 1.0) * dl[k];
@@ -60,14 +63,14 @@ std::array<uint32_t, 10> quadratic_nodes(const Continuum3& c, size_t z) {
 void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) {
   const ZoneProperties& p = c.materials[c.material[z]];
   const std::array<uint32_t, 10> nodes = quadratic_nodes(c, z);
-  const std::array<Vec3, 4> x = corners_of(c.pos, c.zones[z]);
+  double volume = 0;
+  const std::array<Vec3, 4> dl = volume_gradients(corners_of(c.pos, c.zones[z]), volume);
   std::array<Vec3, 10> v;
   for (int k = 0; k < 10; ++k) v[k] = c.vel[nodes[k]];
   ZoneStress mean;
   uint8_t state = 0;
   for (int g = 0; g < 4; ++g) {
-    double volume = 0;
-    const std::array<Vec3, 10> grad = quadratic_gradients(x, g, &volume);
+    const std::array<Vec3, 10> grad = quadratic_gradients(dl, g);
     // The law at the point, on its strain increment.
     ZoneStress& s = c.gp_stress[z][g];
     p.impl->update(p, strain_of(v, grad, c.dt), s, c.gp_state[z][g]);
@@ -89,12 +92,13 @@ void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) 
 
 StrainIncrement quadratic_total_strain(const Continuum3& c, size_t z) {
   const std::array<uint32_t, 10> nodes = quadratic_nodes(c, z);
-  const std::array<Vec3, 4> x0 = corners_of(c.pos0, c.zones[z]);
+  double volume = 0;
+  const std::array<Vec3, 4> dl = volume_gradients(corners_of(c.pos0, c.zones[z]), volume);
   std::array<Vec3, 10> u;
   for (int k = 0; k < 10; ++k) u[k] = c.pos[nodes[k]] - c.pos0[nodes[k]];
   StrainIncrement e;
   for (int g = 0; g < 4; ++g) {
-    const StrainIncrement eg = strain_of(u, quadratic_gradients(x0, g), 0.25);
+    const StrainIncrement eg = strain_of(u, quadratic_gradients(dl, g), 0.25);
     e.xx += eg.xx, e.yy += eg.yy, e.zz += eg.zz, e.xy += eg.xy, e.yz += eg.yz, e.xz += eg.xz;
   }
   return e;
@@ -109,10 +113,10 @@ Eigen::Matrix<double, 30, 30> stiffness(const Continuum3& c, size_t z, double& v
   Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
   d.topLeftCorner<3, 3>().setConstant(lambda);
   for (int i = 0; i < 3; ++i) d(i, i) = lambda + 2.0 * p.shear, d(3 + i, 3 + i) = p.shear;
-  const std::array<Vec3, 4> x = corners_of(c.pos, c.zones[z]);
+  const std::array<Vec3, 4> dl = volume_gradients(corners_of(c.pos, c.zones[z]), volume);
   Eigen::Matrix<double, 30, 30> k = Eigen::Matrix<double, 30, 30>::Zero();
   for (int g = 0; g < 4; ++g) {
-    const std::array<Vec3, 10> grad = quadratic_gradients(x, g, &volume);
+    const std::array<Vec3, 10> grad = quadratic_gradients(dl, g);
     Eigen::Matrix<double, 6, 30> b = Eigen::Matrix<double, 6, 30>::Zero();
     for (int n = 0; n < 10; ++n) {
       const Vec3& gn = grad[n];
@@ -131,30 +135,33 @@ double node_mass(int n) {
 }
 }  // namespace
 
+std::array<double, 10> quadratic_row_sums(const Continuum3& c, size_t z, double* volume) {
+  std::array<double, 10> out{};
+  if (!c.materials[c.material[z]].impl->solid()) return out;
+  double v = 0;
+  const Eigen::Matrix<double, 30, 30> k = stiffness(c, z, v);
+  for (int n = 0; n < 10; ++n)
+    out[n] = k.middleRows<3>(3 * n).cwiseAbs().rowwise().sum().maxCoeff();
+  if (volume) *volume = v;
+  return out;
+}
+
 double quadratic_zone_step(const Continuum3& c, size_t z) {
   const ZoneProperties& p = c.materials[c.material[z]];
   if (!p.impl->solid()) return 1e300;
   double volume = 0;
-  const Eigen::Matrix<double, 30, 30> k = stiffness(c, z, volume);
+  const std::array<double, 10> rows = quadratic_row_sums(c, z, &volume);
   double step = 1e300;
-  for (int n = 0; n < 10; ++n) {
-    const double row = k.middleRows<3>(3 * n).cwiseAbs().rowwise().sum().maxCoeff();
-    if (row > 0) step = std::min(step, 2.0 * std::sqrt(p.density * volume * node_mass(n) / row));
-  }
+  for (int n = 0; n < 10; ++n)
+    if (rows[n] > 0)
+      step = std::min(step, 2.0 * std::sqrt(p.density * volume * node_mass(n) / rows[n]));
   return step;
 }
 
-std::array<double, 10> quadratic_row_sums(const Continuum3& c, size_t z) {
-  std::array<double, 10> out{};
-  if (!c.materials[c.material[z]].impl->solid()) return out;
-  double volume = 0;
-  const Eigen::Matrix<double, 30, 30> k = stiffness(c, z, volume);
-  for (int n = 0; n < 10; ++n)
-    out[n] = k.middleRows<3>(3 * n).cwiseAbs().rowwise().sum().maxCoeff();
-  return out;
-}
-
 void make_quadratic(ZoneMesh3& mesh) {
+  // The surface triangles of the corners, before the mesh is quadratic.
+  const std::vector<std::array<uint32_t, 3>> surface =
+      mesh.on_boundary.empty() ? std::vector<std::array<uint32_t, 3>>{} : boundary_faces(mesh);
   // One node per edge, numbered in the order the zones first meet it (deterministic).
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> at;
   mesh.mid.resize(mesh.tets.size());
@@ -170,10 +177,7 @@ void make_quadratic(ZoneMesh3& mesh) {
       mesh.mid[z][e] = it->second;
     }
   // A mid-edge node is on the surface where its edge lies in a surface triangle.
-  if (mesh.on_boundary.empty()) return;
-  ZoneMesh3 corners = mesh;
-  corners.mid.clear();
-  for (const auto& f : boundary_faces(corners))
+  for (const auto& f : surface)
     for (int k = 0; k < 3; ++k) {
       const uint32_t a = f[k], b = f[(k + 1) % 3];
       mesh.on_boundary[at.at({std::min(a, b), std::max(a, b)})] = 1;

@@ -17,10 +17,12 @@ inline constexpr double kCornerMass = 1.0 / 36.0, kMidMass = 4.0 / 27.0;
 
 // Each integration point's position in volume coordinates: (a, b, b, b) and its permutations.
 double gauss_coordinate(int point, int corner);
-// The ten shape functions' gradients at integration point `point` of a straight-edged zone with
-// these corners (corners first, then mid-edge nodes); `volume` receives its volume.
-std::array<Vec3, 10> quadratic_gradients(const std::array<Vec3, 4>& corners, int point,
-                                         double* volume = nullptr);
+// The gradients of a straight-edged zone's volume coordinates (the linear tetrahedron's,
+// constant in it) from its corners; `volume` receives its volume.
+std::array<Vec3, 4> volume_gradients(const std::array<Vec3, 4>& corners, double& volume);
+// The ten shape functions' gradients at integration point `point` (corners first, then mid-edge
+// nodes), from the volume coordinates' gradients.
+std::array<Vec3, 10> quadratic_gradients(const std::array<Vec3, 4>& dl, int point);
 // The zone's ten nodes: corners, then mid-edge nodes.
 std::array<uint32_t, 10> quadratic_nodes(const Continuum3& c, size_t z);
 // One cycle of quadratic zone z: strain increments at its integration points from the nodes'
@@ -34,6 +36,6 @@ double quadratic_zone_step(const Continuum3& c, size_t z);
 // The largest absolute row sum of the zone's stiffness over each node's three rows: summed over
 // the zones around a node and set against its mass, Gershgorin's bound on the mesh's highest
 // frequency there (deformable3.cpp: node_timesteps3).
-std::array<double, 10> quadratic_row_sums(const Continuum3& c, size_t z);
+std::array<double, 10> quadratic_row_sums(const Continuum3& c, size_t z, double* volume = nullptr);
 
 }  // namespace tessera

@@ -115,18 +115,24 @@ uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material);
 // Makes a tetrahedral mesh quadratic: a node at the middle of every edge (one per edge, shared
 // by the zones around it), listed in `mesh.mid` per zone in VTK's order; surface flags follow.
 void make_quadratic(ZoneMesh3& mesh);
-// How a surface triangle's traction (and contact area) is shared among its three nodes: a third
-// each; a piece of a quadratic zone's face gives it to its mid-edge nodes in equal parts, which
-// for the four pieces of a face is the consistent load of a uniform traction on a 6-node
-// triangle (none at the corners, a third of the force at each mid-edge node).
-inline std::array<double, 3> traction_shares(const std::array<uint32_t, 3>& t,
-                                             const std::vector<uint8_t>& is_mid) {
-  int mids = 0;
-  if (!is_mid.empty())
-    for (uint32_t n : t) mids += is_mid[n];
-  std::array<double, 3> share;
-  for (int k = 0; k < 3; ++k) share[k] = mids == 0 ? 1.0 / 3.0 : is_mid[t[k]] ? 1.0 / mids : 0.0;
-  return share;
+// How a force, traction or area on a surface triangle t is shared among its nodes, given the
+// weights l it would have on a plain triangle: on a piece of a quadratic zone's face (a node
+// with `edge_node` set) kept to its mid-edge nodes and renormalised (in equal parts if l has
+// none there); elsewhere l. For a uniform traction on the four pieces of a face this is the
+// consistent load of a 6-node triangle: none at the corners, a third at each mid-edge node.
+inline Vec3 mid_edge_weights(const std::array<uint32_t, 3>& t, Vec3 l,
+                             const std::vector<uint8_t>& edge_node) {
+  if (edge_node.empty() || !(edge_node[t[0]] | edge_node[t[1]] | edge_node[t[2]])) return l;
+  for (int i = 0; i < 3; ++i)
+    if (!edge_node[t[i]]) l[i] = 0.0;
+  if (!(l.sum() > 0.0))
+    for (int i = 0; i < 3; ++i) l[i] = edge_node[t[i]];
+  return l / l.sum();
+}
+// A traction's shares: a third to each node, or on a quadratic face as mid_edge_weights.
+inline Vec3 traction_shares(const std::array<uint32_t, 3>& t,
+                            const std::vector<uint8_t>& edge_node) {
+  return mid_edge_weights(t, Vec3::Constant(1.0 / 3.0), edge_node);
 }
 // Sets zone z's stress (and, for a quadratic zone, its integration points') and state.
 void set_zone_stress(Continuum3& c, size_t z, const ZoneStress& s, uint8_t state);
@@ -244,12 +250,6 @@ void apply_boundary_stress(Continuum& c, const ZoneMesh& mesh, uint32_t first_no
 template <typename Pred>
 void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_node,
                            const ZoneStress& s, Pred on_face) {
-  std::vector<uint8_t> is_mid;
-  if (!mesh.mid.empty()) {
-    is_mid.assign(mesh.nodes.size(), 0);
-    for (const auto& m : mesh.mid)
-      for (uint32_t n : m) is_mid[n] = 1;
-  }
   for (const auto& f : boundary_faces(mesh)) {
     const uint32_t a = first_node + f[0], b = first_node + f[1], d = first_node + f[2];
     if (!on_face(c.pos[a], c.pos[b], c.pos[d])) continue;
@@ -258,7 +258,7 @@ void apply_boundary_stress(Continuum3& c, const ZoneMesh3& mesh, uint32_t first_
     const Vec3 t(s.xx * n.x() + s.xy * n.y() + s.xz * n.z(),
                  s.xy * n.x() + s.yy * n.y() + s.yz * n.z(),
                  s.xz * n.x() + s.yz * n.y() + s.zz * n.z());
-    const std::array<double, 3> share = traction_shares(f, is_mid);
+    const Vec3 share = traction_shares({a, b, d}, c.edge_node);
     c.applied[a] += share[0] * t, c.applied[b] += share[1] * t, c.applied[d] += share[2] * t;
   }
 }

@@ -8,7 +8,9 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "tessera/contact3d/polyhedron.hpp"
@@ -60,6 +62,13 @@ ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_z
 ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge,
                       size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr,
                       const std::atomic<bool>* stop = nullptr);
+
+// A point as a script writes it (x,y,z, four significant digits), for messages about zones.
+inline std::string point_text(const Vec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.4g,%.4g,%.4g", p.x(), p.y(), p.z());
+  return text;
+}
 
 // Smallest dihedral angle of a tetrahedron, degrees (0 for a flat one).
 double min_dihedral_angle(const std::array<Vec3, 4>& corners);
