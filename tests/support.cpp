@@ -9,7 +9,8 @@
 namespace tessera::test {
 
 ScriptRun::ScriptRun()
-    : interp(std::make_unique<Interpreter>(dir.path().toStdString(), [](const std::string&) {})) {}
+    : interp(std::make_unique<Interpreter>(
+          dir.path().toStdString(), [this](const std::string& line) { log += line + "\n"; })) {}
 
 void ScriptRun::run(const std::string& text) {
   std::istringstream in(text);

@@ -17,6 +17,7 @@ namespace tessera::test {
 struct ScriptRun {
   QTemporaryDir dir;
   std::unique_ptr<Interpreter> interp;
+  std::string log;  // every line the interpreter logged
   ScriptRun();
   // Runs lines of script text (newline separated); throws ScriptError like a file would.
   void run(const std::string& text);
