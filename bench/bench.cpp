@@ -113,7 +113,7 @@ int zone_scene(const std::string& scene, double edge, uint64_t cycles, int order
   }
   if (edge <= 0) edge = 0.36;
   Continuum3 c;
-  ZoneMesh3 mesh = zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 16)), edge);
+  ZoneMesh3 mesh = zone_pieces({box(Vec3::Zero(), Vec3(4, 4, 16))}, edge);
   if (order == 2) make_quadratic(mesh);
   add_mesh(c, mesh, 0);
   return run_zones(c, order == 2 ? scene + "-order2" : scene, edge, cycles, since());

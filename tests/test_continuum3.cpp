@@ -1,7 +1,7 @@
 // Tetrahedral zones (the 3D deformable-block kernel) against closed-form solutions: a cube in
 // uniaxial stress (Young's modulus and Poisson's ratio), a laterally confined column settling
 // under gravity (K0 stresses and settlement), and a Mohr-Coulomb cube in a triaxial test
-// (the Coulomb strength at two confinements). Meshes are CGAL's (zone_polyhedron), so the
+// (the Coulomb strength at two confinements). Meshes are CGAL's (zone_pieces), so the
 // zones are unstructured and oblique: shear terms and the 3D principal axes are exercised.
 #include <QtTest>
 #include <cmath>
@@ -17,7 +17,7 @@ using tessera::test::zone_rock;
 namespace {
 Continuum3 block(const Vec3& hi, double h, const ZoneProperties& p, ZoneMesh3* out = nullptr,
                  bool quadratic = false) {
-  ZoneMesh3 mesh = zone_polyhedron(box(Vec3::Zero(), hi), h);
+  ZoneMesh3 mesh = zone_pieces({box(Vec3::Zero(), hi)}, h);
   if (quadratic) make_quadratic(mesh);
   Continuum3 c;
   c.materials.push_back(p);
@@ -51,7 +51,7 @@ class TestContinuum3 : public QObject {
   // The surface triangles face outward and close the block: their area vectors sum to zero and
   // the divergence theorem gives back the volume.
   void surfaceFacesPointOutward() {
-    const ZoneMesh3 mesh = zone_polyhedron(box(Vec3::Zero(), Vec3(2, 1, 1)), 0.4);
+    const ZoneMesh3 mesh = zone_pieces({box(Vec3::Zero(), Vec3(2, 1, 1))}, 0.4);
     Vec3 sum = Vec3::Zero();
     double volume = 0;
     for (const auto& f : boundary_faces(mesh)) {

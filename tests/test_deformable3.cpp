@@ -322,8 +322,9 @@ class TestDeformable3 : public QObject {
   // CGAL's mesher can leave a flat zone on a block's surface (four nodes on one face). The
   // Salencon slab zoned at 0.2 a had one on the opening's wall (19,073 zones, smallest dihedral
   // angle 0.000 degrees): its nodes had no stable step, froze under density scaling, and the
-  // plastic radius came out 41% short. Such caps are dropped (19,072 zones, 1.04 degrees):
-  // every zone has volume and together they fill the slab exactly.
+  // plastic radius came out 41% short. Such caps are dropped, and the slivers exuded (18,658
+  // zones, 3 under 5 degrees, the smallest 2.5; unexuded 97, the smallest 1.04): every zone
+  // has volume and together they fill the slab exactly.
   void flatZonesOnTheSurfaceAreDropped() {
     ScriptRun r;
     r.run(
@@ -347,7 +348,6 @@ class TestDeformable3 : public QObject {
     QVERIFY(flattest > 1e-4);
     QVERIFY(std::abs(volume - 18) < 1e-9 * 18);
     // The slivers left (under 5 degrees) are counted in a warning with the worst one's place.
-    // (97 of them, the smallest near 0.2099,0.251,1.055)
     QVERIFY2(r.log.find("zones have a dihedral angle under 5 degrees (the smallest near ") !=
                  std::string::npos,
              r.log.c_str());
@@ -477,9 +477,18 @@ class TestDeformable3 : public QObject {
   // 9-degree sector's outermost yielding zone within 5% of it (0.8%), and inside it the zones'
   // sigma_r and sigma_theta, averaged over rings 0.1 a wide on the current shape, within 5% of
   // c cot phi ((r/a)^(Kp-1) - 1) and c cot phi (Kp (r/a)^(Kp-1) - 1) (3.1% next to the wall,
-  // 1.3% further out). Zones of 0.14 a miss the radius by 30% in some sectors. Solved to a
-  // ratio of 1e-4: 1e-5 changes the radius by 0.05% and takes half as long again.
-  void salenconHoleInAJoinedSlab() {
+  // 1.3% further out). Solved to a ratio of 1e-4: 1e-5 changes the radius by 0.05% and takes
+  // half as long again.
+  void salenconHoleInAJoinedSlab() { salencon(0.1, 0.05); }
+
+  // The same zoned at 0.2 a, where CGAL's mesher leaves 97 zones under 5 degrees: unexuded, the
+  // plastic radius was 39% short in some sectors (and at 0.14 a, 30%). Exuded, 3 are left and
+  // the radius is within 0.6%; sigma_r is held to 8% (+5.9% at worst), as these zones are twice
+  // as wide as the rings next to the free wall where it vanishes.
+  void salenconHoleCoarselyZoned() { salencon(0.2, 0.08); }
+
+ private:
+  void salencon(double fine, double sr_tolerance) {
     const double a = 1, p0 = 30e6, coh = 3.45e6, phi = 30 * M_PI / 180;
     ScriptRun r;
     r.run(
@@ -488,7 +497,9 @@ class TestDeformable3 : public QObject {
         "joint define j kn=1e11 ks=1e11 friction=40\njoint assign j\n"
         "block box 0,0,0 6,0.5,6 material=rock\n"
         "tunnel circle centre=0,0,0 axis=0,1,0 radius=1 length=0.5 segments=48 group=hole "
-        "join\nzone generate edge=1.2 fine=0.1 near=0,0.25,0 radius=1.9 growth=0.35\n"
+        "join\nzone generate edge=1.2 fine=" +
+        std::to_string(fine) +
+        " near=0,0.25,0 radius=1.9 growth=0.35\n"
         "boundary fix=x x=-0.001,0.001\nboundary fix=z z=-0.001,0.001\n"
         "boundary fix=y y=-0.001,0.001\nboundary fix=y y=0.499,0.501\n"
         "boundary stress=-30e6,0,0,0,0,0 x=5.999,6.001\n"
@@ -554,8 +565,10 @@ class TestDeformable3 : public QObject {
     }
     QVERIFY(m.ratio <= 1e-4);
     QVERIFY(worst < 0.05);
-    QVERIFY(worst_r < 0.05 && worst_t < 0.05);
+    QVERIFY(worst_r < sr_tolerance && worst_t < 0.05);
   }
+
+ private slots:
 
   // An extruded 2D jointed model: a 2 x 2 m zoned rock square on a rigid base, rollers on its
   // sides, cut through its centre by a joint dipping 30 degrees and loaded on top by 1 MPa, in
@@ -656,18 +669,23 @@ class TestDeformable3 : public QObject {
     QVERIFY(fails(cube + "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n"
                          "jset dip=30 ddir=0 spacing=0.5",
                   "is deformable: cut blocks before"));
-    // A failure inside CGAL's mesher (a jointed tunnel whose cuts meet at shallow angles) names
-    // the block, and the dump CGAL writes into the working directory is cleared away.
-    QVERIFY(
-        fails("dimension 3\ntolerance 0.01\nmaterial define rock density=2700 E=10e9 "
-              "nu=0.25\njoint define j kn=2e10 ks=1e10 friction=32\njoint assign j\n"
-              "region 0,0,-10.5 10.5,18,10.5 group=rock material=rock\n"
-              "jset dip=0 ddir=0 spacing=12 origin=0,0,6 name=bedding\n"
-              "jset dip=90 ddir=0 spacing=4.5 origin=0,0,0 name=cross\n"
-              "tunnel circle centre=0,0,0 axis=0,1,0 radius=3 length=9 rounds=3 segments=16 "
-              "name=tunnel group=tunnel join\n"
-              "zone generate edge=4 fine=0.8 near=0,4.5,0 radius=4 growth=0.4",
-              "block 20: CGAL's mesher failed"));
+    // A jointed tunnel whose cuts meet at shallow angles made CGAL's mesher fail in block 20
+    // ("... is already inserted on surface") when single blocks were meshed from their surface;
+    // meshed as bodies of one piece, like joined ones, it zones. (Such a failure names the block
+    // and clears away the dump CGAL writes into the working directory.)
+    {
+      ScriptRun r;
+      r.run(
+          "dimension 3\ntolerance 0.01\nmaterial define rock density=2700 E=10e9 "
+          "nu=0.25\njoint define j kn=2e10 ks=1e10 friction=32\njoint assign j\n"
+          "region 0,0,-10.5 10.5,18,10.5 group=rock material=rock\n"
+          "jset dip=0 ddir=0 spacing=12 origin=0,0,6 name=bedding\n"
+          "jset dip=90 ddir=0 spacing=4.5 origin=0,0,0 name=cross\n"
+          "tunnel circle centre=0,0,0 axis=0,1,0 radius=3 length=9 rounds=3 segments=16 "
+          "name=tunnel group=tunnel join\n"
+          "zone generate edge=4 fine=0.8 near=0,4.5,0 radius=4 growth=0.4");
+      QVERIFY(r.model().continuum3.zone_count() > 10000);
+    }
     QVERIFY(!QFile::exists("dump-bug.mesh") && !QFile::exists("dump-bug.binary.cgal"));
   }
 };

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "tessera/zones/continuum.hpp"
 #include "tessera/zones/zone_model.hpp"
 #include "tessera/zones/zoning.hpp"
 #include "tessera/zones/zoning3.hpp"
@@ -234,14 +235,17 @@ class TestZones : public QObject {
                              zone_polygon({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 0.1));  // clockwise
   }
 
-  // Tetrahedra tile a concave block (an L prism): volumes positive and adding up, none in the
-  // notch, corners kept, surface nodes on the faces and no others there, quality and size as
-  // asked, the same mesh every time; graded zones finer near the centre; bad blocks refused.
+  // Tetrahedra tile a concave block (an L prism of two convex pieces): volumes positive and
+  // adding up, none in the notch, corners kept, surface nodes on the faces and no others there
+  // (the face between the pieces is inside), quality and size as asked, the same mesh every
+  // time; graded zones finer near the centre; bad blocks refused.
   void tetrahedraTileTheBlock() {
     const std::vector<Eigen::Vector2d> l_shape{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}};
     const Polyhedron block = prism(l_shape, 0, 1);
+    const std::vector<Polyhedron> pieces{prism({{0, 0}, {3, 0}, {3, 1}, {0, 1}}, 0, 1),
+                                         prism({{0, 1}, {1, 1}, {1, 2}, {0, 2}}, 0, 1)};
     const double h = 0.25;
-    const ZoneMesh3 m = zone_polyhedron(block, h);
+    const ZoneMesh3 m = zone_pieces(pieces, h);
     double volume = 0;
     for (const auto& t : m.tets) {
       const std::array<Vec3, 4> p{m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]};
@@ -275,11 +279,11 @@ class TestZones : public QObject {
     QVERIFY(boundary >= 200);  // surface 18 in triangles of edges at most 2h
     QCOMPARE(min_dihedral_angle({Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)}),
              std::acos(1.0 / 3.0) * 180 / std::numbers::pi);  // the regular tetrahedron's
-    const ZoneMesh3 again = zone_polyhedron(block, h);
+    const ZoneMesh3 again = zone_pieces(pieces, h);
     QVERIFY(again.nodes == m.nodes && again.tets == m.tets);
     // Graded: edges of 0.2 within 0.5 of a corner of a 4 m cube, growing by 0.5 per metre to 1.
     const ZoneGrading3 grade{Vec3::Zero(), 0.5, 0.2, 0.5};
-    const ZoneMesh3 g = zone_polyhedron(box(Vec3::Zero(), Vec3(4, 4, 4)), 1.0, 2000000, &grade);
+    const ZoneMesh3 g = zone_pieces({box(Vec3::Zero(), Vec3(4, 4, 4))}, 1.0, 2000000, &grade);
     double near = 0, far = 0;
     int n_near = 0, n_far = 0;
     for (const auto& t : g.tets) {
@@ -292,26 +296,54 @@ class TestZones : public QObject {
           near / n_near, far / n_far);
     QVERIFY(n_near > 10 && n_far > 10 && near / n_near < 0.4 && far / n_far > 0.6);
     // Refused: too many zones, faces turned inside out, a surface with a hole.
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(block, 1e-3, 100000));
-    Polyhedron inverted = block, open = block;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_pieces(pieces, 1e-3, 100000));
+    Polyhedron inverted = pieces[0], open = pieces[0];
     for (auto& f : inverted.faces) std::reverse(f.begin(), f.end());
     open.faces.pop_back();
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(inverted, h));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(open, h));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_polyhedron(block, 0.0));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_pieces({inverted}, h));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_pieces({open}, h));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, zone_pieces(pieces, 0.0));
   }
 
-  // A joined body (one 2 x 1 x 1 box on two unit boxes: the big one's bottom face meets both
-  // small ones', a T where their shared face ends on it) as one conforming mesh: every zone in
-  // one piece, each piece's zones filling its volume, nodes shared across the faces between
-  // pieces (each face's zone faces on one side are the other side's), every piece's corners
-  // nodes, the same mesh every time.
+  // A plate thinner than its zones (1.5 x 0.05 x 1 m at 0.5 m) is filled: the mesher refines
+  // across the thickness, every surface triangle lies in a face of the plate and the volumes add
+  // up. (Meshed from their surface, plates 5 cm thick left cells across the thickness out, and
+  // zoning failed: "a surface triangle of its zones lies on no face".)
+  void thinPlateIsFilled() {
+    const ZoneMesh3 m = zone_pieces({box(Vec3::Zero(), Vec3(1.5, 0.05, 1))}, 0.5);
+    double volume = 0;
+    for (const auto& t : m.tets)
+      volume += (m.nodes[t[1]] - m.nodes[t[0]])
+                    .cross(m.nodes[t[2]] - m.nodes[t[0]])
+                    .dot(m.nodes[t[3]] - m.nodes[t[0]]) /
+                6.0;
+    int off_faces = 0;
+    for (const auto& f : boundary_faces(m)) {
+      const Vec3 c = (m.nodes[f[0]] + m.nodes[f[1]] + m.nodes[f[2]]) / 3.0;
+      const auto at = [](double a, double b) { return std::abs(a - b) < 1e-12; };
+      const bool flat_x = at(m.nodes[f[0]].x(), m.nodes[f[1]].x()) &&
+                          at(m.nodes[f[0]].x(), m.nodes[f[2]].x()),
+                 flat_y = at(m.nodes[f[0]].y(), m.nodes[f[1]].y()) &&
+                          at(m.nodes[f[0]].y(), m.nodes[f[2]].y()),
+                 flat_z = at(m.nodes[f[0]].z(), m.nodes[f[1]].z()) &&
+                          at(m.nodes[f[0]].z(), m.nodes[f[2]].z());
+      const bool on = (flat_x && (at(c.x(), 0) || at(c.x(), 1.5))) ||
+                      (flat_y && (at(c.y(), 0) || at(c.y(), 0.05))) ||
+                      (flat_z && (at(c.z(), 0) || at(c.z(), 1)));
+      off_faces += !on;
+    }
+    qInfo("%zu tetrahedra, smallest dihedral %.2f degrees, %zu under 5", m.tets.size(),
+          m.min_dihedral, m.poor);
+    QCOMPARE(off_faces, 0);
+    QVERIFY(std::abs(volume - 0.075) < 1e-12);
+  }
+
   // A stop flag set while meshing (a signal, the window's Stop) ends the mesher by
   // ZoningStopped, a single block or a joined body, and leaves nothing behind: the same block
   // meshed afterwards is the same mesh as before.
   void meshingStopsOnItsFlag() {
     const Polyhedron block = box(Vec3::Zero(), Vec3(2, 1, 1));
-    const ZoneMesh3 before = zone_polyhedron(block, 0.3);
+    const ZoneMesh3 before = zone_pieces({block}, 0.3);
     std::atomic<bool> stop{true};
     const auto stopped = [&](const auto& mesh) {
       try {
@@ -321,16 +353,21 @@ class TestZones : public QObject {
       }
       return false;
     };
-    QVERIFY(stopped([&] { zone_polyhedron(block, 0.3, 2000000, nullptr, &stop); }));
+    QVERIFY(stopped([&] { zone_pieces({block}, 0.3, 2000000, nullptr, &stop); }));
     QVERIFY(stopped([&] {
       zone_pieces({box(Vec3::Zero(), Vec3(1, 1, 1)), box(Vec3(1, 0, 0), Vec3(2, 1, 1))}, 0.3,
                   2000000, nullptr, &stop);
     }));
     stop = false;
-    const ZoneMesh3 after = zone_polyhedron(block, 0.3, 2000000, nullptr, &stop);
+    const ZoneMesh3 after = zone_pieces({block}, 0.3, 2000000, nullptr, &stop);
     QVERIFY(after.nodes == before.nodes && after.tets == before.tets);
   }
 
+  // A joined body (one 2 x 1 x 1 box on two unit boxes: the big one's bottom face meets both
+  // small ones', a T where their shared face ends on it) as one conforming mesh: every zone in
+  // one piece, each piece's zones filling its volume, nodes shared across the faces between
+  // pieces (each face's zone faces on one side are the other side's), every piece's corners
+  // nodes, the same mesh every time.
   void piecesMeshAsOneBody() {
     const std::vector<Polyhedron> pieces{box(Vec3(0, 0, 0), Vec3(1, 1, 1)),
                                          box(Vec3(1, 0, 0), Vec3(2, 1, 1)),

@@ -62,7 +62,10 @@ void attach_piece(Blocks3& B, size_t b, const ZoneMesh3& mesh, uint32_t piece, u
         in = in && std::abs(fn.dot(mesh.nodes[k]) - B.world_offset[f]) < 1e3 * eps;
       if (in) face = f;
     }
-    if (face == f1) throw std::invalid_argument("a surface triangle of its zones lies on no face");
+    if (face == f1)
+      throw std::invalid_argument(
+          "a surface triangle of its zones lies on no face (near " +
+          point_text((mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]]) / 3.0) + ")");
     on_face[face - f0].push_back({first + t[0], first + t[1], first + t[2]});
   }
   set_face_triangles(B, b, on_face);
@@ -92,14 +95,9 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGra
           " has no elastic constants (give E and nu, or K and G, on 'material define')");
   }
   sync_zone_materials(m);
-  ZoneMesh3 mesh;
-  if (pieces.size() == 1) {
-    mesh = zone_polyhedron(B.polyhedron(b), max_edge, 2000000, grading, stop);
-  } else {
-    std::vector<Polyhedron> polys;
-    for (size_t k : pieces) polys.push_back(B.polyhedron(k));
-    mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
-  }
+  std::vector<Polyhedron> polys;
+  for (size_t k : pieces) polys.push_back(B.polyhedron(k));
+  ZoneMesh3 mesh = zone_pieces(polys, max_edge, 2000000, grading, stop);
   // A zone of no volume has no stiffness and no stable step: refused, with where it is.
   if (mesh.min_dihedral < 1e-3)
     throw std::invalid_argument("the mesher left a flat zone (no volume) inside it at " +

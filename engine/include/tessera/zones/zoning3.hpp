@@ -40,25 +40,19 @@ struct ZoneMesh3 {
   static constexpr double kPoorDihedral = 5.0;
 };
 
-// Tetrahedra filling a closed polyhedron (convex or not), edges of about `max_edge` (the block's
-// edges split into pieces of at most `max_edge`, zones' circumradii at most that of a regular
-// tetrahedron of that edge; the longest zone edge comes out under 2 `max_edge`), finer near a
-// grading's centre. Every block corner is a node; the zones' volumes add up to the
-// block's; flat zones the mesher leaves on the surface (four nodes on one face) are dropped,
-// and the mesh's quality is measured (`min_dihedral`, `worst_at`, `poor`). The same input gives
-// the same mesh. Throws std::invalid_argument for a block that
-// is not a closed, outward-facing surface, a size that is not positive, or one that would make
-// more than `max_zones` zones.
+// One mesh of tetrahedra filling a body of convex pieces that touch along their faces (a joined
+// block; one piece for a convex block). Edges of about `max_edge` (every piece's edges split
+// into pieces of at most `max_edge`, zones' circumradii at most that of a regular tetrahedron
+// of that edge; the longest zone edge comes out under 2 `max_edge`), finer near a grading's
+// centre. The zones conform across the faces between pieces (nodes shared, no joint), each zone
+// lies in one piece (`piece`, zones sorted by it), every piece's corners are nodes and its faces
+// are covered by zone faces, and the zones' volumes add up to the pieces'. Edges of pieces that
+// end on another's edge, or cross it, are split there. Slivers are exuded where that keeps the
+// pieces filled; flat zones left on the surface (four nodes on one face) are dropped, and the
+// mesh's quality is measured (`min_dihedral`, `worst_at`, `poor`). The same input gives the same
+// mesh. Throws std::invalid_argument for a piece that is not a closed, outward-facing surface,
+// a size that is not positive, or one that would make more than `max_zones` zones.
 // `stop`, when given and set from another thread, ends the meshing by ZoningStopped.
-ZoneMesh3 zone_polyhedron(const Polyhedron& block, double max_edge, size_t max_zones = 2000000,
-                          const ZoneGrading3* grading = nullptr,
-                          const std::atomic<bool>* stop = nullptr);
-
-// One mesh filling a body of convex pieces that touch along their faces (a joined block): the
-// zones conform across the faces between pieces (nodes shared, no joint), each zone lies in one
-// piece (`piece`, zones sorted by it), and every piece's corners are nodes and its faces are
-// covered by zone faces; otherwise as zone_polyhedron. Edges of pieces that end on another's
-// edge, or cross it, are split there.
 ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge,
                       size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr,
                       const std::atomic<bool>* stop = nullptr);
