@@ -259,6 +259,57 @@ class TestGui : public QObject {
     }
   }
 
+  // The window draws 3D models through VTK's depth buffer, not faces sorted by depth: a brick on
+  // the far corner of a footing shows whole at the default view (its share of the model's pixels
+  // is its silhouette's, 3.01%, less its outlines; painted in depth order the footing's top
+  // covered most of it), and a block behind a wall, seen level from the south, has no pixel.
+  void windowHidesWhatIsBehindIn3d() {
+    // Pixels of the second group's colour (120,150,190, shaded) among all coloured ones, left
+    // of the colour bar.
+    const auto shares = [](const QImage& img) {
+      long blue = 0, coloured = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width() * 8 / 10; ++x) {
+          const QColor c = img.pixelColor(x, y);
+          if (c.saturation() < 40) continue;
+          ++coloured;
+          blue += c.blue() > c.red() + 30;
+        }
+      return std::pair<long, long>{blue, coloured};
+    };
+    const QString path = write_script(dir_, "depth3d.tess",
+                                      "dimension 3\nmaterial define rock density=2500\n"
+                                      "block box 0,0,0 10,10,1 material=rock group=footing\n"
+                                      "block box 8,8,1 9,9,2 material=rock group=brick\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const auto [brick, model] = shares(w.view()->grabFramebuffer());
+    qInfo("brick on the footing: %ld of %ld coloured pixels (%.2f%%, silhouette 3.01%%)", brick,
+          model, 100.0 * double(brick) / double(model));
+    QVERIFY(model > 5000);
+    QVERIFY(std::abs(double(brick) / double(model) - 0.0301) < 0.15 * 0.0301);
+    const QString behind = write_script(dir_, "behind3d.tess",
+                                        "dimension 3\nmaterial define rock density=2500\n"
+                                        "block box 0,20,0 10,22,10 material=rock group=wall\n"
+                                        "block box 4,24,4 5,25,5 material=rock group=hidden\n");
+    MainWindow w2;
+    QVERIFY(open_shown(w2, behind));
+    ViewOptions o = w2.viewOptions();
+    o.azimuth = 180, o.elevation = 0;
+    w2.setViewOptions(o);
+    w2.view()->resetCamera();
+    QTest::qWait(100);
+    const QImage level = w2.view()->grabFramebuffer();
+    const auto [hidden, shown] = shares(level);
+    qInfo("block behind the wall: %ld of %ld coloured pixels", hidden, shown);
+    QVERIFY(shown > 5000);
+    QCOMPARE(hidden, 0L);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      level.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d_behind.png");
+  }
+
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in
   // ramp colours, compressive blue at the foot, near zero red at the top; by state, four entries.
   void framebufferShowsZoneStresses() {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "depth_raster.hpp"
 #include "tessera/core/model.hpp"
 #include "tessera/script/script.hpp"
 
@@ -125,17 +126,31 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
       p.drawPolygon(q);
     }
   };
-  draw(s.polygons, true, s.zones.empty());
-  if (!s.zones.empty()) {
-    draw(s.zones, true, false);
-    draw(s.polygons, false, true);
-  }
-  p.setPen(Qt::NoPen);
-  for (const auto& bar : s.bars) {
-    QPolygonF q;
-    for (const Vec2& v : bar.corners) q << map(v);
-    p.setBrush(qcolour(bar.colour));
-    p.drawPolygon(q);
+  if (s.three) {
+    // 3D: faces, outlines and contacts through a depth buffer at twice the page's resolution
+    // (smoothed down), drawn as one image; PNG is the format for 3D figures.
+    constexpr double kOver = 2.0;
+    const QSize size(static_cast<int>(std::ceil(plot.width() * kOver)),
+                     static_cast<int>(std::ceil(plot.height() * kOver)));
+    const QImage image = depth_raster(
+        s, size, [&](const Vec2& v) { return (map(v) - plot.topLeft()) * kOver; },
+        kOver * edge.widthF());
+    p.drawImage(plot, image.scaled(static_cast<int>(std::ceil(plot.width())),
+                                   static_cast<int>(std::ceil(plot.height())),
+                                   Qt::IgnoreAspectRatio, Qt::SmoothTransformation));
+  } else {
+    draw(s.polygons, true, s.zones.empty());
+    if (!s.zones.empty()) {
+      draw(s.zones, true, false);
+      draw(s.polygons, false, true);
+    }
+    p.setPen(Qt::NoPen);
+    for (const auto& bar : s.bars) {
+      QPolygonF q;
+      for (const Vec2& v : bar.corners) q << map(v);
+      p.setBrush(qcolour(bar.colour));
+      p.drawPolygon(q);
+    }
   }
   p.setPen(QPen(Qt::black, std::max(0.8, font_px / 12.0)));
   for (const auto& a : s.arrows) {

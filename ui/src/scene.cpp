@@ -347,6 +347,7 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
     if (out.polygons.empty()) lo = hi = Vec2::Zero();
     const double size = std::max((hi - lo).norm(), 1e-9);
     add_contacts(flat, o, out, size);
+    set_bar_depths3(s, o, out);
     add_arrows(flat, o, out, size);
     out.lo = lo, out.hi = hi;
     char view[80];
@@ -384,7 +385,29 @@ bool inside(const Vec2* pts, size_t n, Vec2 p) {
 }  // namespace
 
 int block_at(const Scene& scene, Vec2 p) {
-  // The polygon drawn last (in 3D the nearest) wins.
+  if (scene.three) {
+    // The nearest face there: its height at p from the fan triangle holding p.
+    int best = -1;
+    double nearest = -1e300;
+    for (const auto& poly : scene.polygons) {
+      const auto& v = poly.points;
+      if (v.size() < 3 || poly.depth.size() != v.size()) continue;
+      for (size_t k = 1; k + 1 < v.size(); ++k) {
+        const Vec2 a = v[0], b = v[k], c = v[k + 1];
+        const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+        if (!(std::abs(area) > 0)) continue;
+        const double wb = ((p - a).x() * (c - a).y() - (p - a).y() * (c - a).x()) / area;
+        const double wc = ((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) / area;
+        if (wb < 0 || wc < 0 || wb + wc > 1) continue;
+        const double z =
+            (1 - wb - wc) * poly.depth[0] + wb * poly.depth[k] + wc * poly.depth[k + 1];
+        if (z > nearest) nearest = z, best = poly.block;
+        break;
+      }
+    }
+    return best;
+  }
+  // The polygon drawn last wins.
   for (auto it = scene.polygons.rbegin(); it != scene.polygons.rend(); ++it)
     if (it->points.size() >= 3 && inside(it->points.data(), it->points.size(), p)) return it->block;
   return -1;

@@ -45,15 +45,23 @@ Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
   return flat;
 }
 
+void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  const View view(o);
+  for (SceneBar& bar : out.bars) {
+    if (bar.contact < 0 || static_cast<size_t>(bar.contact) >= s.contacts.size()) continue;
+    const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
+    Vec3 at = c.point3;
+    // Magnified like the blocks: the bar moves with block a.
+    if (c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size())
+      at += (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(c.a)]);
+    bar.depth = at.dot(view.eye);
+  }
+}
+
 void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>& colours,
                 Scene& out,
                 const std::function<std::optional<Rgb>(const SnapshotZone&)>& zone_colour) {
   const View view(o);
-  struct Shown {
-    double depth;
-    ScenePolygon polygon;
-  };
-  std::vector<Shown> shown;
   // Shaded by how squarely the polygon faces the viewer.
   const auto shaded = [](Rgb base, double facing) {
     const double light = 0.6 + 0.4 * facing;
@@ -64,18 +72,17 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   };
   // A polygon of world points if it faces the viewer.
   const auto show = [&](const std::vector<Vec3>& pts, int block, Rgb base, bool outline) {
-    Vec3 n = Vec3::Zero(), c = Vec3::Zero();
-    for (size_t k = 0; k < pts.size(); ++k)
-      n += pts[k].cross(pts[(k + 1) % pts.size()]), c += pts[k];
+    Vec3 n = Vec3::Zero();
+    for (size_t k = 0; k < pts.size(); ++k) n += pts[k].cross(pts[(k + 1) % pts.size()]);
     const double facing = n.normalized().dot(view.eye);
     if (!(facing > 1e-9)) return;
-    Shown v;
-    v.depth = (c / static_cast<double>(pts.size())).dot(view.eye);
-    v.polygon.block = block;
-    v.polygon.outline = outline;
-    for (const Vec3& p : pts) v.polygon.points.push_back(view(p));
-    v.polygon.colour = shaded(base, facing);
-    shown.push_back(std::move(v));
+    ScenePolygon polygon;
+    polygon.block = block;
+    polygon.outline = outline;
+    for (const Vec3& p : pts)
+      polygon.points.push_back(view(p)), polygon.depth.push_back(p.dot(view.eye));
+    polygon.colour = shaded(base, facing);
+    out.polygons.push_back(std::move(polygon));
   };
   // Faces of deformable blocks drawn by their zones' surface triangles (tris3 come grouped by
   // face, in face order).
@@ -102,9 +109,6 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     for (uint32_t k = face.begin; k < face.end; ++k) pts.push_back(s.points3[k] + shift);
     show(pts, face.block, colours[static_cast<size_t>(face.block)], true);
   }
-  std::stable_sort(shown.begin(), shown.end(),
-                   [](const Shown& p, const Shown& q) { return p.depth < q.depth; });
-  for (Shown& v : shown) out.polygons.push_back(std::move(v.polygon));
 }
 
 }  // namespace tessera::ui

@@ -1,6 +1,8 @@
 // 3D models in a Scene: a parallel projection along the view's azimuth and elevation, faces
-// turned away dropped, the rest shaded by how squarely they face the viewer and drawn from the
-// farthest (painter's order). Contacts and arrows are drawn as in 2D from a projected snapshot.
+// turned away dropped, the rest shaded by how squarely they face the viewer, each point with its
+// height towards the viewer, so that figures and the window hide what is behind by a depth
+// buffer (the faces come in no particular order). Contacts and arrows are drawn as in 2D from a
+// projected snapshot.
 #pragma once
 
 #include <functional>
@@ -13,6 +15,9 @@ namespace tessera::ui {
 // The snapshot with block centroids, displacements and sub-contacts projected onto the view
 // plane (its 2D fields), for the contact bars and displacement arrows.
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o);
+// The contact bars' heights towards the viewer (the sub-contacts' points, magnified like the
+// blocks), for bars built from the projected snapshot.
+void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out);
 // Block faces as polygons in view coordinates, coloured per block. With `zone_colour`, the
 // faces of deformable blocks are drawn as their surface triangles (on the magnified nodes), each
 // in the colour of the zone it bounds; a zone given no colour (null) leaves its triangle out.

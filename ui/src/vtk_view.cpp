@@ -30,11 +30,11 @@
 namespace tessera::ui {
 
 namespace {
-// A polydata of filled polygons with one RGB colour per cell, at height z, each `dz` above the
-// one before (3D scenes come in painter's order: the nearest face last, so highest).
+// A polydata of filled polygons with one RGB colour per cell, at height z, or (3D scenes) each
+// point at its own height towards the viewer, so that the depth buffer hides what is behind.
 void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
-                   const std::vector<Rgb>& colours, double z, double dz = 0.0,
-                   const std::vector<size_t>* stack = nullptr) {
+                   const std::vector<Rgb>& colours, double z,
+                   const std::vector<std::vector<double>>* heights = nullptr) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkUnsignedCharArray> rgb;
@@ -42,9 +42,9 @@ void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
   rgb->SetName("colour");
   for (size_t i = 0; i < polys.size(); ++i) {
     cells->InsertNextCell(static_cast<int>(polys[i].size()));
-    const double zi = z + dz * static_cast<double>(stack ? (*stack)[i] : i);
-    for (const Vec2& v : polys[i])
-      cells->InsertCellPoint(points->InsertNextPoint(v.x(), v.y(), zi));
+    for (size_t k = 0; k < polys[i].size(); ++k)
+      cells->InsertCellPoint(points->InsertNextPoint(polys[i][k].x(), polys[i][k].y(),
+                                                     heights ? (*heights)[i][k] : z));
     const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
     rgb->InsertNextTypedTuple(c);
   }
@@ -208,18 +208,36 @@ void VtkView::rebuild() {
   std::vector<std::vector<Vec2>> polys;
   std::vector<Rgb> colours;
   for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
+  // 3D: every point at its height towards the viewer, the nearest face just below the 2D
+  // overlays (at heights 0.01-0.025), outlines and contact bars a hair in front of their faces.
+  double top = -1e300;
+  for (const auto& p : scene_.polygons)
+    for (double d : p.depth) top = std::max(top, d);
+  double bottom = top;
+  for (const auto& p : scene_.polygons)
+    for (double d : p.depth) bottom = std::min(bottom, d);
+  const double lift = 1e-4 * std::max({top - bottom, (scene_.hi - scene_.lo).norm(), 1e-12});
+  const auto heights = [&](const std::vector<const ScenePolygon*>& list, double over) {
+    std::vector<std::vector<double>> h;
+    for (const ScenePolygon* p : list) {
+      h.emplace_back();
+      for (double d : p->depth) h.back().push_back(d - top - 3 * lift + over);
+    }
+    return h;
+  };
   if (scene_.three) {
-    // Faces stacked in drawing order below the contacts, each outline just above its face.
-    const double dz = 0.0025 / static_cast<double>(std::max<size_t>(polys.size(), 1));
-    fill_polygons(blocks_, polys, colours, 0.0, dz);
-    // Outlines of block faces only (not of zones' surface triangles), each at its face's height.
-    std::vector<std::vector<Vec2>> outlined;
+    std::vector<const ScenePolygon*> all, outlined;
+    std::vector<std::vector<Vec2>> outlined_points;
     std::vector<Rgb> outline_colours;
-    std::vector<size_t> stack;
-    for (size_t i = 0; i < scene_.polygons.size(); ++i)
-      if (scene_.polygons[i].outline)
-        outlined.push_back(polys[i]), outline_colours.push_back(colours[i]), stack.push_back(i);
-    fill_polygons(edges_, outlined, outline_colours, 0.5 * dz, dz, &stack);
+    for (const auto& p : scene_.polygons) {
+      all.push_back(&p);
+      if (p.outline)
+        outlined.push_back(&p), outlined_points.push_back(p.points),
+            outline_colours.push_back(p.colour);
+    }
+    const auto face_heights = heights(all, 0.0), edge_heights = heights(outlined, lift);
+    fill_polygons(blocks_, polys, colours, 0.0, &face_heights);
+    fill_polygons(edges_, outlined_points, outline_colours, 0.0, &edge_heights);
   } else {
     fill_polygons(blocks_, polys, colours, 0.0);
     // Block outlines above the zones, which sit above the block fills.
@@ -241,7 +259,14 @@ void VtkView::rebuild() {
   for (const auto& b : scene_.bars)
     polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),
         colours.push_back(b.colour);
-  fill_polygons(bars_, polys, colours, 0.01);
+  if (scene_.three) {
+    std::vector<std::vector<double>> bar_heights;
+    for (const auto& b : scene_.bars)
+      bar_heights.emplace_back(4, b.depth - top - 3 * lift + 2 * lift);
+    fill_polygons(bars_, polys, colours, 0.0, &bar_heights);
+  } else {
+    fill_polygons(bars_, polys, colours, 0.01);
+  }
   // Arrows as line cells: shaft and two head strokes.
   vtkNew<vtkPoints> pts;
   vtkNew<vtkCellArray> lines;
@@ -287,6 +312,7 @@ void VtkView::rebuild() {
   scalar_bar_->SetVisibility(!L.title.empty() && (L.continuous || !L.entries.empty()));
   title_->SetInput(scene_.title.c_str());
   caption_->SetInput(scene_.caption.c_str());
+  renderer_->ResetCameraClippingRange();
 }
 
 void VtkView::resetCamera() {

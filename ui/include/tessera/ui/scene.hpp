@@ -18,8 +18,9 @@ namespace tessera::ui {
 struct ScenePolygon {
   std::vector<Vec2> points;
   Rgb colour;
-  int block = -1;       // index in the snapshot
-  bool outline = true;  // drawn with a dark edge (a 3D zone's surface triangle is not)
+  int block = -1;             // index in the snapshot
+  bool outline = true;        // drawn with a dark edge (a 3D zone's surface triangle is not)
+  std::vector<double> depth;  // 3D: each point's height towards the viewer, for a depth buffer
 };
 
 // A contact drawn as a bar along the joint, its width showing the normal force.
@@ -27,6 +28,7 @@ struct SceneBar {
   Vec2 corners[4];
   Rgb colour;
   int contact = -1;
+  double depth = 0;  // 3D: the sub-contact's height towards the viewer
 };
 
 struct SceneArrow {
@@ -51,7 +53,7 @@ struct Scene {
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // what to show
   double arrow_scale = 0;                     // drawn length per metre of displacement
   std::vector<uint8_t> deformable_blocks;     // by snapshot block index
-  bool three = false;                         // a 3D model, drawn in view coordinates
+  bool three = false;  // a 3D model, drawn in view coordinates (with depths: no hand sorting)
   bool deformable(int block) const {
     return block >= 0 && static_cast<size_t>(block) < deformable_blocks.size() &&
            deformable_blocks[static_cast<size_t>(block)];
