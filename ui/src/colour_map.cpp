@@ -59,4 +59,28 @@ std::string hex(Rgb c) {
   return buf;
 }
 
+std::vector<double> round_ticks(double lo, double hi, int about) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};
+  const double raw = (hi - lo) / std::max(1, about);
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * p;
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * p >= raw) {
+      step = m * p;
+      break;
+    }
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1.0) {
+    const double v = k * step;
+    ticks.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
+  return ticks;
+}
+
+std::string tick_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
 }  // namespace tessera::ui

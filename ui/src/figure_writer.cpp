@@ -50,11 +50,12 @@ double paint_legend(QPainter& p, const Legend& L, const QRectF& box, double font
     p.fillRect(QRectF(box.left(), y, sw, h), g);
     p.setPen(QPen(Qt::black, 0));
     p.drawRect(QRectF(box.left(), y, sw, h));
-    for (int i = 0; i <= 4; ++i) {
-      const double v = L.lo + (L.hi - L.lo) * i / 4.0;
-      const double ty = y + h - h * i / 4.0;
+    // Labels at round values within the range.
+    for (double v : round_ticks(L.lo, L.hi)) {
+      const double ty = y + h - h * (L.hi > L.lo ? (v - L.lo) / (L.hi - L.lo) : 0.0);
       p.drawLine(QPointF(box.left() + sw, ty), QPointF(box.left() + sw * 1.3, ty));
-      p.drawText(QPointF(box.left() + sw * 1.5, ty + 0.35 * font_px), number(v));
+      p.drawText(QPointF(box.left() + sw * 1.5, ty + 0.35 * font_px),
+                 QString::fromStdString(tick_text(v)));
     }
     return y + h + font_px - box.top();
   }

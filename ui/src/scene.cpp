@@ -117,16 +117,31 @@ const char* const kStateNames[4] = {"elastic", "shear now", "tension now", "yiel
 const Rgb kNoZones{200, 200, 200};  // rigid blocks in a picture of zones
 
 // The legend's title and value range over the items (a range flatter than `flat` relative is
-// widened so that it has a width); lo and hi are returned too.
+// widened so that it has a width); lo and hi are returned too. Over more than 100 items the
+// range runs from the 1st to the 99th percentile when that is narrower, so that a few extreme
+// values (a block falling free, a zone at a sharp corner) do not wash out the rest; the true
+// extremes are kept for the caption.
 template <class Items, class Value>
 void set_range(Legend& L, ColourBy c, bool continuous, const Items& items, Value value, double flat,
                double& lo, double& hi) {
   L.title = value_title(c);
   L.continuous = continuous;
+  std::vector<double> values;
+  for (size_t i = 0; i < items.size(); ++i) values.push_back(value(items[i]));
   lo = 0, hi = 0;
-  for (size_t i = 0; i < items.size(); ++i) {
-    const double v = value(items[i]);
-    lo = i ? std::min(lo, v) : v, hi = i ? std::max(hi, v) : v;
+  if (!values.empty()) {
+    const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
+    lo = *mn, hi = *mx;
+  }
+  L.min = lo, L.max = hi, L.clipped = false;
+  if (continuous && values.size() > 100) {
+    const auto at = [&](double q) {
+      auto k = values.begin() + static_cast<std::ptrdiff_t>(q * double(values.size() - 1));
+      std::nth_element(values.begin(), k, values.end());
+      return *k;
+    };
+    const double p1 = at(0.01), p99 = at(0.99);
+    if (p99 > p1 && (p1 > lo || p99 < hi)) lo = p1, hi = p99, L.clipped = true;
   }
   if (hi - lo < flat * std::max(1.0, std::abs(hi))) hi = lo + (lo == 0 ? 1.0 : std::abs(lo));
   L.lo = lo, L.hi = hi;
@@ -266,7 +281,9 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
     L.title = o.contacts == ContactShow::kForce
                   ? (s.three ? "normal force [N]" : "normal force [N/m]")
                   : "shear displacement [m]";
-    L.lo = 0, L.hi = o.contacts == ContactShow::kForce ? fmax : smax;
+    // Forces coloured to the 98th percentile, as the widths (the largest is in the caption).
+    L.lo = 0, L.hi = o.contacts == ContactShow::kForce ? fwide : smax;
+    L.clipped = o.contacts == ContactShow::kForce && fwide < fmax, L.max = fmax;
     if (L.hi <= 0) L.hi = 1;
   }
   for (size_t i = 0; i < s.contacts.size(); ++i) {
@@ -307,8 +324,9 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
     out.bars.push_back(bar);
   }
   const std::string unit = s.three ? " N" : " N/m";
-  out.caption += "   contact width: normal force, full at " + number(fwide) + unit + " (largest " +
-                 number(fmax) + ")";
+  out.caption +=
+      "   contact width" + std::string(o.contacts == ContactShow::kForce ? " and colour" : "") +
+      ": normal force, full at " + number(fwide) + unit + " (largest " + number(fmax) + ")";
 }
 
 // Displacement arrows at block centroids, the longest a tenth of the model's size.
@@ -337,6 +355,9 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
   out.caption = buf;
   if (o.magnify != 1.0) out.caption += "   displacements x" + number(o.magnify);
   add_blocks(s, o, out);
+  if (out.blocks_legend.clipped)
+    out.caption += "   colours: 1st to 99th percentile (all values " +
+                   number(out.blocks_legend.min) + " to " + number(out.blocks_legend.max) + ")";
   out.three = s.three;
   if (s.three) {
     // Contacts and arrows of the projected model; the view box from the faces drawn.

@@ -6,6 +6,7 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkLegendScaleActor.h>
 #include <vtkLookupTable.h>
@@ -18,6 +19,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <QKeyEvent>
@@ -68,9 +70,17 @@ void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec2, 2>>& segment
   pd->SetLines(lines);
 }
 
-void set_direct_colours(vtkActor* actor, vtkPolyData* pd) {
+void set_direct_colours(vtkActor* actor, vtkPolyData* pd, bool filled = false) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(pd);
+  if (filled) {
+    // Polygons cut into triangles by ear clipping: OpenGL fills a concave polygon (a block
+    // whose edge follows an opening's arc) as a fan from its first corner, across the opening.
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(pd);
+    mapper->SetInputConnection(triangles->GetOutputPort());
+  } else {
+    mapper->SetInputData(pd);
+  }
   mapper->SetColorModeToDirectScalars();
   mapper->SetScalarModeToUseCellData();
   actor->SetMapper(mapper);
@@ -98,13 +108,13 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   window_->AddRenderer(renderer_);
   renderer_->SetBackground(1, 1, 1);
   renderer_->GetActiveCamera()->ParallelProjectionOn();
-  set_direct_colours(blocks_actor_, blocks_);
-  set_direct_colours(zones_actor_, zones_);
+  set_direct_colours(blocks_actor_, blocks_, true);
+  set_direct_colours(zones_actor_, zones_, true);
   set_direct_colours(edges_actor_, edges_);
   edges_actor_->GetMapper()->ScalarVisibilityOff();
   edges_actor_->GetProperty()->SetRepresentationToWireframe();
   edges_actor_->GetProperty()->SetColor(0.25, 0.25, 0.25);
-  set_direct_colours(bars_actor_, bars_);
+  set_direct_colours(bars_actor_, bars_, true);
   set_line_colour(arrows_actor_, arrows_, 0, 0, 0, 1.5);
   set_line_colour(band_actor_, band_, 0.85, 0.1, 0.1, 2.0);
   band_actor_->GetProperty()->SetPointSize(7.0);
@@ -297,7 +307,14 @@ void VtkView::rebuild() {
       lut->SetTableValue(i, c.r / 255.0, c.g / 255.0, c.b / 255.0);
     }
     lut->SetRange(L.lo, L.hi);
+    // Labels at round values within the range.
+    vtkNew<vtkDoubleArray> ticks;
+    for (double v : round_ticks(L.lo, L.hi)) ticks->InsertNextValue(v);
+    scalar_bar_->SetCustomLabels(ticks);
+    scalar_bar_->UseCustomLabelsOn();
+    scalar_bar_->SetLabelFormat("%g");
   } else {
+    scalar_bar_->UseCustomLabelsOff();
     lut->IndexedLookupOn();
     lut->SetNumberOfTableValues(static_cast<vtkIdType>(L.entries.size()));
     for (size_t i = 0; i < L.entries.size(); ++i) {

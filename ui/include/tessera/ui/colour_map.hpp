@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace tessera::ui {
 
@@ -24,5 +25,9 @@ Rgb slipping_colour();
 Rgb bonded_colour();
 // "#rrggbb".
 std::string hex(Rgb c);
+// Round values for a scale from lo to hi: multiples of 1, 2 or 5 times a power of ten, about
+// `about` of them, all within [lo, hi]; and such a value as text ("0.25", "-1.5e+06").
+std::vector<double> round_ticks(double lo, double hi, int about = 5);
+std::string tick_text(double v);
 
 }  // namespace tessera::ui

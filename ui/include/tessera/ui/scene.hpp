@@ -40,6 +40,10 @@ struct Legend {
   std::string title;
   bool continuous = false;
   double lo = 0, hi = 0;
+  // A continuous range clipped to percentiles (so that one spike does not wash out the rest):
+  // the values' true extremes.
+  bool clipped = false;
+  double min = 0, max = 0;
   std::vector<std::pair<std::string, Rgb>> entries;
 };
 
