@@ -161,7 +161,8 @@ class TestGui : public QObject {
   }
 
   // After excavation the opening is empty in the window, as in the batch figures: the pixels at
-  // the tunnel's centre and around it, within the radius, are background.
+  // the tunnel's centre and around it, within the radius, are background. The axes are labelled
+  // at round values, and the model, zoomed in, stays out of the colour bar's margin.
   void excavatedOpeningIsEmpty() {
     const QString copy = dir_.filePath("tunnel_jointed.tess");
     QVERIFY(QFile::copy(QString(TESSERA_EXAMPLES) + "/tunnel_jointed.tess", copy));
@@ -181,6 +182,42 @@ class TestGui : public QObject {
         if (r == 0) break;
       }
     QCOMPARE(filled, 0);
+    // The axes are labelled at round values, and zoomed in on the opening the colour bar's
+    // margin stays clear of the model (no rock pixel right of the model's viewport).
+    const auto round = [](const std::vector<double>& t) {
+      if (t.size() < 3) return false;
+      const double step = t[1] - t[0];
+      const double m = step / std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+      bool ok = std::abs(m - 1) < 1e-6 || std::abs(m - 2) < 1e-6 || std::abs(m - 5) < 1e-6;
+      for (double v : t) ok = ok && std::abs(v / step - std::round(v / step)) < 1e-6;
+      return ok;
+    };
+    QVERIFY(round(w.view()->xTicks()) && round(w.view()->yTicks()));
+    QCOMPARE(w.view()->xTicks().front(), 0.0);
+    QCOMPARE(w.view()->xTicks().back(), 40.0);
+    const QPoint centre = w.view()->pixelOf({20, 20});
+    for (int i = 0; i < 4; ++i) {
+      QWheelEvent wheel(centre, w.view()->mapToGlobal(centre), {}, {0, 120}, Qt::NoButton,
+                        Qt::NoModifier, Qt::NoScrollPhase, false);
+      QApplication::sendEvent(w.view(), &wheel);
+    }
+    QTest::qWait(100);
+    const QImage zoomed = w.view()->grabFramebuffer();
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      zoomed.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/tunnel_jointed_zoomed.png");
+    const Rgb rock = category(0);
+    int covered = 0;
+    // The strips either side of the colour bar (which shows the rock's colour as its swatch).
+    for (int y = 0; y < zoomed.height(); y += 3)
+      for (int x = zoomed.width() * 785 / 1000; x < zoomed.width(); x += 3) {
+        if (x > zoomed.width() * 80 / 100 && x < zoomed.width() * 975 / 1000) continue;
+        const QColor c = zoomed.pixelColor(x, y);
+        covered += std::abs(c.red() - rock.r) < 8 && std::abs(c.green() - rock.g) < 8 &&
+                   std::abs(c.blue() - rock.b) < 8;
+      }
+    QCOMPARE(covered, 0);
+    QVERIFY(round(w.view()->xTicks()) &&
+            w.view()->xTicks().back() - w.view()->xTicks().front() < 30);
   }
 
   // The solve runs on the worker: the event loop (a timer) keeps going during it; stop ends it at
@@ -406,6 +443,15 @@ class TestGui : public QObject {
     const QColor foot = pixel(0.5, 0.05), top = pixel(0.5, 3.95);
     QVERIFY2(foot.blue() > foot.red() + 80, qPrintable(foot.name()));
     QVERIFY2(top.red() > top.blue() + 80, qPrintable(top.name()));
+    QVERIFY(!w.view()->contactScaleShown());
+    // With the contacts coloured by force too, they get a colour bar of their own.
+    o.contacts = ContactShow::kForce;
+    w.setViewOptions(o);
+    QTest::qWait(100);
+    QVERIFY(w.view()->contactScaleShown());
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
+                                       "/zones_and_contacts.png");
     o.colour = ColourBy::kZoneState;
     QCOMPARE(build_scene(*w.snapshot(), o).blocks_legend.entries.size(), size_t(4));
   }

@@ -8,7 +8,6 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkLegendScaleActor.h>
 #include <vtkLookupTable.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -94,6 +93,37 @@ void set_line_colour(vtkActor* actor, vtkPolyData* pd, double r, double g, doubl
   actor->GetProperty()->SetLineWidth(static_cast<float>(width));
 }
 
+// A colour bar for a legend: the ramp labelled at round values, or named colours.
+void set_legend(vtkScalarBarActor* bar, const Legend& L) {
+  vtkNew<vtkLookupTable> lut;
+  if (L.continuous) {
+    lut->SetNumberOfTableValues(kRampSamples);
+    for (int i = 0; i < kRampSamples; ++i) {
+      const Rgb c = ramp(i / double(kRampSamples - 1));
+      lut->SetTableValue(i, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+    }
+    lut->SetRange(L.lo, L.hi);
+    vtkNew<vtkDoubleArray> ticks;
+    for (double v : round_ticks(L.lo, L.hi)) ticks->InsertNextValue(v);
+    bar->SetCustomLabels(ticks);
+    bar->UseCustomLabelsOn();
+    bar->SetLabelFormat("%g");
+  } else {
+    bar->UseCustomLabelsOff();
+    lut->IndexedLookupOn();
+    lut->SetNumberOfTableValues(static_cast<vtkIdType>(L.entries.size()));
+    for (size_t i = 0; i < L.entries.size(); ++i) {
+      const Rgb c = L.entries[i].second;
+      lut->SetTableValue(static_cast<vtkIdType>(i), c.r / 255.0, c.g / 255.0, c.b / 255.0);
+      lut->SetAnnotation(vtkVariant(static_cast<int>(i)), L.entries[i].first);
+    }
+  }
+  lut->Build();
+  bar->SetLookupTable(lut);
+  bar->SetTitle(L.title.c_str());
+  bar->SetVisibility(!L.title.empty() && (L.continuous || !L.entries.empty()));
+}
+
 void style_text(vtkTextActor* t, int size, bool bold) {
   t->GetTextProperty()->SetColor(0, 0, 0);
   t->GetTextProperty()->SetFontSize(size);
@@ -105,8 +135,17 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   window_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
   window_->SetOwnContext(false);
   window_->SetFrameBlitModeToBlitToCurrent();
+  // The model in its own viewport on a second layer, over a frame that holds the title, caption
+  // and colour bars in margins the model never covers, however it is zoomed or panned.
+  window_->SetNumberOfLayers(2);
+  window_->AddRenderer(frame_);
   window_->AddRenderer(renderer_);
-  renderer_->SetBackground(1, 1, 1);
+  frame_->SetLayer(0);
+  frame_->SetBackground(1, 1, 1);
+  frame_->InteractiveOff();
+  renderer_->SetLayer(1);
+  renderer_->SetViewport(kModelViewport[0], kModelViewport[1], kModelViewport[2],
+                         kModelViewport[3]);
   renderer_->GetActiveCamera()->ParallelProjectionOn();
   set_direct_colours(blocks_actor_, blocks_, true);
   set_direct_colours(zones_actor_, zones_, true);
@@ -127,37 +166,43 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
     a->GetProperty()->LightingOff();
     renderer_->AddActor(a);
   }
-  scalar_bar_->SetNumberOfLabels(5);
-  scalar_bar_->UnconstrainedFontSizeOn();
-  scalar_bar_->VisibilityOff();
-  scalar_bar_->SetPosition(0.85, 0.1);
-  scalar_bar_->SetWidth(0.1);
-  scalar_bar_->SetHeight(0.7);
-  for (vtkTextProperty* t :
-       {scalar_bar_->GetTitleTextProperty(), scalar_bar_->GetLabelTextProperty(),
-        scalar_bar_->GetAnnotationTextProperty()}) {
-    t->SetColor(0, 0, 0);
-    t->ItalicOff();
-    t->ShadowOff();
-    t->BoldOff();
-    t->SetFontSize(13);
+  for (vtkScalarBarActor* bar : {scalar_bar_.Get(), contacts_bar_.Get()}) {
+    bar->SetNumberOfLabels(5);
+    bar->UnconstrainedFontSizeOn();
+    bar->VisibilityOff();
+    bar->SetWidth(0.1);
+    for (vtkTextProperty* t : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty(),
+                               bar->GetAnnotationTextProperty()}) {
+      t->SetColor(0, 0, 0);
+      t->ItalicOff();
+      t->ShadowOff();
+      t->BoldOff();
+      t->SetFontSize(13);
+    }
+    frame_->AddActor2D(bar);
   }
-  renderer_->AddActor2D(scalar_bar_);
   // Axes along the left and bottom edges labelled in model coordinates (metres).
-  scale_->AllAnnotationsOff();
-  scale_->SetLabelModeToXYCoordinates();
-  scale_->BottomAxisVisibilityOn();
-  scale_->LeftAxisVisibilityOn();
-  for (vtkAxisActor2D* axis : {scale_->GetBottomAxis(), scale_->GetLeftAxis()}) {
+  // Axes along the model viewport's left and bottom edges, in the frame's margin, labelled in
+  // model coordinates (metres) at round values (placed before every render: placeAxes).
+  for (vtkAxisActor2D* axis : {x_axis_.Get(), y_axis_.Get()}) {
+    axis->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    axis->GetPosition2Coordinate()->SetCoordinateSystemToDisplay();
+    axis->AdjustLabelsOff();
+    axis->SetLabelFormat("%g");
+    axis->TitleVisibilityOff();
+    axis->SetTickLength(6);
+    axis->SetMinorTickLength(3);
+    axis->SetNumberOfMinorTicks(0);
+    axis->SetFontFactor(1.0);
     axis->GetProperty()->SetColor(0, 0, 0);
     axis->GetLabelTextProperty()->SetColor(0, 0, 0);
     axis->GetLabelTextProperty()->ItalicOff();
     axis->GetLabelTextProperty()->ShadowOff();
-    axis->SetFontFactor(1.0);
+    axis->GetLabelTextProperty()->BoldOff();
+    axis->GetLabelTextProperty()->SetFontSize(12);
+    axis->VisibilityOff();
+    frame_->AddActor2D(axis);
   }
-  scale_->SetBottomBorderOffset(45);
-  scale_->SetLeftBorderOffset(70);
-  renderer_->AddViewProp(scale_);
   style_text(title_, 18, true);
   title_->SetTextScaleModeToNone();
   title_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
@@ -167,8 +212,8 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   style_text(caption_, 12, false);
   caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   caption_->SetPosition(0.01, 0.01);
-  renderer_->AddActor2D(title_);
-  renderer_->AddActor2D(caption_);
+  frame_->AddActor2D(title_);
+  frame_->AddActor2D(caption_);
   setMouseTracking(false);
   setFocusPolicy(Qt::StrongFocus);
 }
@@ -199,7 +244,40 @@ void VtkView::resizeGL(int w, int h) {
   window_->SetSize(static_cast<int>(w * r), static_cast<int>(h * r));
 }
 
+bool VtkView::contactScaleShown() const {
+  return contacts_bar_->GetVisibility() != 0;
+}
+
+void VtkView::placeAxes() {
+  // Axes in model coordinates mean nothing on a 3D view (its scale bar is in the caption).
+  const bool shown = has_scene_ && !scene_.three && width() > 0 && height() > 0;
+  x_axis_->SetVisibility(shown);
+  y_axis_->SetVisibility(shown);
+  if (!shown) return;
+  Vec2 lo, hi;
+  visibleWindow(lo, hi);
+  const double r = devicePixelRatioF(), w = width() * r, h = height() * r;
+  const double x0 = kModelViewport[0] * w, x1 = kModelViewport[2] * w, y0 = kModelViewport[1] * h,
+               y1 = kModelViewport[3] * h;
+  const std::vector<double> xs = round_ticks(lo.x(), hi.x(), 7),
+                            ys = round_ticks(lo.y(), hi.y(), 7);
+  const auto dx = [&](double x) { return x0 + (x - lo.x()) / (hi.x() - lo.x()) * (x1 - x0); };
+  const auto dy = [&](double y) { return y0 + (y - lo.y()) / (hi.y() - lo.y()) * (y1 - y0); };
+  // Each axis runs between its first and last round value, ticks and labels on its outer side
+  // (the right of its direction): the bottom one left to right, the left one top to bottom.
+  x_axis_->GetPositionCoordinate()->SetValue(dx(xs.front()), y0 - 2);
+  x_axis_->GetPosition2Coordinate()->SetValue(dx(xs.back()), y0 - 2);
+  x_axis_->SetRange(xs.front(), xs.back());
+  x_axis_->SetNumberOfLabels(static_cast<int>(xs.size()));
+  x_ticks_ = xs, y_ticks_ = ys;
+  y_axis_->GetPositionCoordinate()->SetValue(x0 + 2, dy(ys.back()));
+  y_axis_->GetPosition2Coordinate()->SetValue(x0 + 2, dy(ys.front()));
+  y_axis_->SetRange(ys.back(), ys.front());
+  y_axis_->SetNumberOfLabels(static_cast<int>(ys.size()));
+}
+
 void VtkView::paintGL() {
+  placeAxes();
   window_->SetReadyForRendering(true);
   window_->SetIsCurrent(true);
   window_->Render();
@@ -253,8 +331,6 @@ void VtkView::rebuild() {
     // Block outlines above the zones, which sit above the block fills.
     fill_polygons(edges_, polys, colours, 0.006);
   }
-  // Axes in model coordinates mean nothing on a 3D view (its scale bar is in the caption).
-  scale_->SetVisibility(!scene_.three);
   std::vector<std::array<Vec2, 2>> outline = highlight_segments_;
   for (const auto& p : scene_.polygons)
     if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
@@ -295,38 +371,22 @@ void VtkView::rebuild() {
   arrows_->Initialize();
   arrows_->SetPoints(pts);
   arrows_->SetLines(lines);
-  // Legend: the blocks' colour bar, or the contacts' when blocks are categorical.
+  // Legends: the blocks' (or zones') colours, and the contacts' when they are continuous too
+  // (zones by stress, contacts by force: each its own scale), one above the other.
+  const bool both = scene_.contacts_legend.continuous && !scene_.contacts_legend.title.empty() &&
+                    scene_.blocks_legend.continuous;
   const Legend& L = scene_.blocks_legend.continuous || !scene_.contacts_legend.continuous
                         ? scene_.blocks_legend
                         : scene_.contacts_legend;
-  vtkNew<vtkLookupTable> lut;
-  if (L.continuous) {
-    lut->SetNumberOfTableValues(kRampSamples);
-    for (int i = 0; i < kRampSamples; ++i) {
-      const Rgb c = ramp(i / double(kRampSamples - 1));
-      lut->SetTableValue(i, c.r / 255.0, c.g / 255.0, c.b / 255.0);
-    }
-    lut->SetRange(L.lo, L.hi);
-    // Labels at round values within the range.
-    vtkNew<vtkDoubleArray> ticks;
-    for (double v : round_ticks(L.lo, L.hi)) ticks->InsertNextValue(v);
-    scalar_bar_->SetCustomLabels(ticks);
-    scalar_bar_->UseCustomLabelsOn();
-    scalar_bar_->SetLabelFormat("%g");
-  } else {
-    scalar_bar_->UseCustomLabelsOff();
-    lut->IndexedLookupOn();
-    lut->SetNumberOfTableValues(static_cast<vtkIdType>(L.entries.size()));
-    for (size_t i = 0; i < L.entries.size(); ++i) {
-      const Rgb c = L.entries[i].second;
-      lut->SetTableValue(static_cast<vtkIdType>(i), c.r / 255.0, c.g / 255.0, c.b / 255.0);
-      lut->SetAnnotation(vtkVariant(static_cast<int>(i)), L.entries[i].first);
-    }
+  set_legend(scalar_bar_, L);
+  scalar_bar_->SetPosition(0.87, both ? 0.52 : 0.1);
+  scalar_bar_->SetHeight(both ? 0.38 : 0.75);
+  contacts_bar_->SetVisibility(both);
+  if (both) {
+    set_legend(contacts_bar_, scene_.contacts_legend);
+    contacts_bar_->SetPosition(0.87, 0.08);
+    contacts_bar_->SetHeight(0.38);
   }
-  lut->Build();
-  scalar_bar_->SetLookupTable(lut);
-  scalar_bar_->SetTitle(L.title.c_str());
-  scalar_bar_->SetVisibility(!L.title.empty() && (L.continuous || !L.entries.empty()));
   title_->SetInput(scene_.title.c_str());
   caption_->SetInput(scene_.caption.c_str());
   renderer_->ResetCameraClippingRange();
@@ -338,9 +398,12 @@ void VtkView::resetCamera() {
   cam->SetFocalPoint(mid.x(), mid.y(), 0);
   cam->SetPosition(mid.x(), mid.y(), 10 * std::max(span.x(), span.y()) + 1);
   cam->SetViewUp(0, 1, 0);
-  const double aspect = height() > 0 ? double(width()) / height() : 1.0;
-  // Room for the title, colour bar and scale axes around the model.
-  cam->SetParallelScale(0.62 * std::max(span.y(), span.x() / aspect / 0.8));
+  // The model's viewport (the frame's margins hold title, caption and colour bars), with room
+  // for the scale axes along its left and bottom edges.
+  const double w = width() * (kModelViewport[2] - kModelViewport[0]),
+               h = height() * (kModelViewport[3] - kModelViewport[1]);
+  const double aspect = h > 0 ? w / h : 1.0;
+  cam->SetParallelScale(0.58 * std::max(span.y(), span.x() / aspect));
   renderer_->ResetCameraClippingRange();
   update();
 }
@@ -363,7 +426,12 @@ QPoint VtkView::pixelOf(Vec2 p) {
 }
 
 void VtkView::visibleWindow(Vec2& lo, Vec2& hi) {
-  const Vec2 a = modelPoint(QPoint(0, height())), b = modelPoint(QPoint(width(), 0));
+  // The corners of the model's viewport.
+  const QPoint low(static_cast<int>(kModelViewport[0] * width()),
+                   static_cast<int>((1 - kModelViewport[1]) * height())),
+      high(static_cast<int>(kModelViewport[2] * width()),
+           static_cast<int>((1 - kModelViewport[3]) * height()));
+  const Vec2 a = modelPoint(low), b = modelPoint(high);
   lo = a.cwiseMin(b), hi = a.cwiseMax(b);
 }
 

@@ -22,7 +22,7 @@
 
 class vtkActor;
 class vtkGenericOpenGLRenderWindow;
-class vtkLegendScaleActor;
+class vtkAxisActor2D;
 class vtkPolyData;
 class vtkRenderer;
 class vtkScalarBarActor;
@@ -56,6 +56,11 @@ class VtkView : public QOpenGLWidget {
   // Lines drawn over the model to preview a cut before it is made (empty: none).
   void setPreview(const std::vector<std::array<Vec2, 2>>& segments);
   size_t previewSegments() const { return preview_count_; }
+  // Whether the contacts have a colour bar of their own (beside the blocks' or zones').
+  bool contactScaleShown() const;
+  // The values the axes are labelled at, as last drawn (2D views).
+  const std::vector<double>& xTicks() const { return x_ticks_; }
+  const std::vector<double>& yTicks() const { return y_ticks_; }
   // Blocks (scene indices) and segments outlined as selected.
   void setHighlight(const std::vector<int>& blocks,
                     const std::vector<std::array<Vec2, 2>>& segments = {});
@@ -85,6 +90,8 @@ class VtkView : public QOpenGLWidget {
 
  private:
   void rebuild();
+  // The axes at round model coordinates along the model viewport's edges, for the camera now.
+  void placeAxes();
   // The rubber band: the drawn points and the cursor.
   void showDrawing(const QPoint& cursor);
   void finishDrawing();
@@ -97,8 +104,12 @@ class VtkView : public QOpenGLWidget {
   std::vector<int> highlight_blocks_;
   std::vector<std::array<Vec2, 2>> highlight_segments_;
   size_t preview_count_ = 0;
-  vtkNew<vtkScalarBarActor> scalar_bar_;
-  vtkNew<vtkLegendScaleActor> scale_;
+  vtkNew<vtkRenderer> frame_;  // title, caption and colour bars around the model's viewport
+  // The model's viewport in the window (x0, y0, x1, y1, normalized).
+  static constexpr double kModelViewport[4] = {0.08, 0.12, 0.78, 0.93};
+  vtkNew<vtkScalarBarActor> scalar_bar_, contacts_bar_;
+  vtkNew<vtkAxisActor2D> x_axis_, y_axis_;
+  std::vector<double> x_ticks_, y_ticks_;
   vtkNew<vtkTextActor> title_, caption_;
   Scene scene_;
   bool has_scene_ = false;
