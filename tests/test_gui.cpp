@@ -756,6 +756,29 @@ class TestGui : public QObject {
                QString("rock"));
   }
 
+  // Commands typed one after another at the console all run: the line keeps its focus while
+  // the solver runs, and a command entered meanwhile waits its turn (before, the line was
+  // disabled during a run and the second command was lost).
+  void typedCommandsAreNotLost() {
+    MainWindow w;
+    w.show();
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    const uint64_t start = w.snapshot()->cycle;
+    QLineEdit* line = w.console()->input();
+    line->setFocus();
+    QTest::keyClicks(line, "step 300000");
+    QTest::keyClick(line, Qt::Key_Return);
+    QVERIFY(w.busy());
+    QVERIFY(line->isEnabled());
+    QTest::keyClicks(line, "step 7");
+    QTest::keyClick(line, Qt::Key_Return);
+    QVERIFY(wait_finished(w));
+    QTRY_VERIFY_WITH_TIMEOUT(!w.busy() && w.snapshot()->cycle == start + 300007, 120000);
+    QVERIFY(w.console()->text().contains("queued: step 7"));
+    QCOMPARE(line->text(), QString());
+  }
+
   // A bad command and a diverging run: an error in the console and a message, the model as
   // it was before the command.
   void badCommandLeavesModel() {

@@ -57,7 +57,13 @@ MainWindow::MainWindow(QWidget* parent)
   connect(worker_, &SolverWorker::started, this, &MainWindow::onStarted);
   connect(worker_, &SolverWorker::finished, this, &MainWindow::onFinished);
   thread_.start();
-  connect(console_, &ConsoleWidget::command, this, &MainWindow::runCommand);
+  // A command typed while the solver runs waits its turn (the line keeps focus, so typing on
+  // after Enter loses nothing).
+  connect(console_, &ConsoleWidget::command, this, [this](const QString& line) {
+    if (!busy()) return runCommand(line);
+    pending_.append(line);
+    console_->append("queued: " + line + " (runs when the solver is done)", false);
+  });
   connect(view_, &VtkView::turned, this, [this](double azimuth, double elevation) {
     options_.azimuth = std::fmod(options_.azimuth + azimuth + 360.0, 360.0);
     options_.elevation = std::clamp(options_.elevation + elevation, -89.0, 89.0);
@@ -207,7 +213,6 @@ void MainWindow::setBusy(bool b) {
   step_action_->setEnabled(!b);
   pause_action_->setEnabled(b);
   stop_action_->setEnabled(b);
-  console_->input()->setEnabled(!b);
   if (!b && pause_action_->isChecked()) pause_action_->setChecked(false);
   updateEditActions();
 }
@@ -322,7 +327,10 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   }
   emit commandFinished(ok);
   if (stage_running_ >= 0 && !what.startsWith('<')) onStageLineFinished(ok);
-  if (!ok) pending_.clear();
+  if (!ok && !pending_.isEmpty()) {
+    console_->append("not run after the error: " + pending_.join("; "), true);
+    pending_.clear();
+  }
   if (!pending_.isEmpty() && stage_running_ < 0)
     QTimer::singleShot(0, this, [this] {
       if (!pending_.isEmpty() && !busy()) runCommand(pending_.takeFirst());
