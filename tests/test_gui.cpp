@@ -2,9 +2,11 @@
 // of the rendered view, figure export, and a bad command leaving the model as it was.
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QLineEdit>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -754,6 +756,27 @@ class TestGui : public QObject {
       QCOMPARE(QString::fromStdString(
                    w.snapshot()->materials[size_t(w.snapshot()->blocks[size_t(b)].material)].name),
                QString("rock"));
+  }
+
+  // A closed panel comes back from the View menu.
+  void viewMenuReopensPanels() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QDockWidget* console = nullptr;
+    for (QDockWidget* d : w.findChildren<QDockWidget*>())
+      if (d->windowTitle() == "Console") console = d;
+    QVERIFY(console && console->isVisible());
+    console->close();
+    QVERIFY(!console->isVisible());
+    QAction* reopen = nullptr;
+    for (QAction* menu : w.menuBar()->actions())
+      if (menu->text() == "&View")
+        for (QAction* a : menu->menu()->actions())
+          if (a->text() == "Console") reopen = a;
+    QVERIFY(reopen);
+    reopen->trigger();
+    QVERIFY(console->isVisible());
   }
 
   // Commands typed one after another at the console all run: the line keeps its focus while

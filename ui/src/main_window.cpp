@@ -50,6 +50,9 @@ MainWindow::MainWindow(QWidget* parent)
   buildDocks();
   buildStageDock();
   buildModelMenu();
+  // The View menu reopens any panel that was closed (each panel's own show/hide action).
+  view_menu_->addSeparator();
+  for (QDockWidget* d : findChildren<QDockWidget*>()) view_menu_->addAction(d->toggleViewAction());
   // The solver's thread: commands go to it queued, its log and results come back queued.
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
@@ -131,7 +134,7 @@ void MainWindow::buildActions() {
   pause_action_->setCheckable(true);
   connect(pause_action_, &QAction::toggled, this, &MainWindow::setPaused);
   stop_action_ = run->addAction("St&op", QKeySequence("Shift+F5"), this, &MainWindow::stopRun);
-  QMenu* view = menuBar()->addMenu("&View");
+  QMenu* view = view_menu_ = menuBar()->addMenu("&View");
   view->addAction("&Fit model", QKeySequence("Home"), this, [this] { view_->resetCamera(); });
 
   QToolBar* bar = addToolBar("Run");

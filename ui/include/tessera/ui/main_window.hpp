@@ -153,6 +153,7 @@ class MainWindow : public QMainWindow {
   QLabel *cycle_label_, *ratio_label_, *speed_label_;
   QProgressBar* progress_;
   QMenu* recent_menu_;
+  QMenu* view_menu_ = nullptr;
   QAction *run_action_, *step_action_, *pause_action_, *stop_action_;
   QAction *undo_action_ = nullptr, *redo_action_ = nullptr, *block_tool_ = nullptr,
           *crack_tool_ = nullptr;
