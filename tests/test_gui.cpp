@@ -758,6 +758,36 @@ class TestGui : public QObject {
                QString("rock"));
   }
 
+  // Enter finishes a shape wherever the focus is (here the console's empty command line), and
+  // clicking the tool that is on keeps it on.
+  void enterFinishesAShapeAnywhere() {
+    const QString path = write_script(dir_, "enter.tess",
+                                      "round 0.005\nmaterial define stone density=2500\n"
+                                      "block 0,0 4,0 4,1 0,1 material=stone\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    w.view()->resetCamera();
+    QTest::qWait(50);
+    w.setDrawingDefaults(0.25, "", "stone");
+    QAction* crack = nullptr;
+    for (QAction* a : w.findChildren<QAction*>())
+      if (a->text() == "Crack") crack = a;
+    QVERIFY(crack);
+    crack->trigger();
+    QVERIFY(crack->isChecked());
+    crack->trigger();  // clicked again: still on
+    QVERIFY(crack->isChecked());
+    QCOMPARE(w.view()->drawing().mode(), DrawMode::kCrack);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({-0.25, 0.5}));
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({4.25, 0.5}));
+    QLineEdit* line = w.console()->input();
+    line->setFocus();
+    QTest::keyClick(line, Qt::Key_Return);
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.journal().last(), QString("crack -0.25,0.5 4.25,0.5"));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
+  }
+
   // A closed panel comes back from the View menu.
   void viewMenuReopensPanels() {
     MainWindow w;

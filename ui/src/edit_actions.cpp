@@ -23,7 +23,8 @@ void MainWindow::buildEditActions() {
   QToolBar* bar = addToolBar("Draw");
   bar->setObjectName("draw_toolbar");
   auto* tools = new QActionGroup(this);
-  tools->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+  // Clicking the tool that is on keeps it on (Select is the tool that draws nothing).
+  tools->setExclusionPolicy(QActionGroup::ExclusionPolicy::Exclusive);
   select_tool_ = bar->addAction("Select");
   select_tool_->setToolTip("Select blocks: click one, or drag a box around their centroids");
   block_tool_ = bar->addAction("Block");

@@ -1,6 +1,7 @@
 // Main window layout, actions, and the flow between the solver thread and the view.
 #include "tessera/ui/main_window.hpp"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -12,7 +13,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -44,6 +47,7 @@ MainWindow::MainWindow(QWidget* parent)
       tree_(new ModelTree(this)),
       properties_(new PropertyPanel(this)) {
   setWindowTitle("Tessera");
+  qApp->installEventFilter(this);
   setCentralWidget(view_);
   buildActions();
   buildEditActions();
@@ -209,6 +213,18 @@ void MainWindow::buildDocks() {
 
 bool MainWindow::busy() const {
   return worker_->busy() || !running_.isEmpty();
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::KeyPress && watched->isWidgetType() &&
+      static_cast<QWidget*>(watched)->window() == this) {
+    const int key = static_cast<QKeyEvent*>(event)->key();
+    const auto* text = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+    if ((key == Qt::Key_Return || key == Qt::Key_Enter) && (!text || text->text().isEmpty()) &&
+        view_->finishShape())
+      return true;
+  }
+  return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::setBusy(bool b) {

@@ -510,6 +510,13 @@ void VtkView::mouseDoubleClickEvent(QMouseEvent* e) {
   button_ = Qt::NoButton;
 }
 
+bool VtkView::finishShape() {
+  const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
+  if (!shapes || drawing_.points().empty()) return false;
+  finishDrawing();
+  return true;
+}
+
 void VtkView::keyPressEvent(QKeyEvent* e) {
   const bool shapes = drawing_.mode() == DrawMode::kBlock || drawing_.mode() == DrawMode::kCrack;
   if (shapes && (e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter)) {

@@ -136,6 +136,8 @@ class MainWindow : public QMainWindow {
   void saveStateAs();
   void exportDialog();
   void setBusy(bool busy);
+  // Enter finishes a shape being drawn wherever the focus is (unless a text field holds text).
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
   SolverWorker* worker_;
   QThread thread_;

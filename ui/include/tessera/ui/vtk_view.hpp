@@ -53,6 +53,8 @@ class VtkView : public QOpenGLWidget {
   // block vertices within 8 pixels.
   void setDrawing(DrawMode mode, double grid);
   const Drawing& drawing() const { return drawing_; }
+  // Finishes the shape being drawn, as Enter in the view does; false if none is under way.
+  bool finishShape();
   // Lines drawn over the model to preview a cut before it is made (empty: none).
   void setPreview(const std::vector<std::array<Vec2, 2>>& segments);
   size_t previewSegments() const { return preview_count_; }
