@@ -788,6 +788,26 @@ class TestGui : public QObject {
     QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
   }
 
+  // A block drawn in a new model, before any rounding length is set: a default one is set
+  // first and said in the console, and the block is made (before, the command failed and the
+  // drawn polygon was lost).
+  void blockToolInANewModelUsesAStatedRounding() {
+    const QString path = write_script(dir_, "empty.tess", "; nothing yet\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    w.setDrawingDefaults(0.5, "", "");
+    w.view()->resetCamera();
+    QTest::qWait(50);
+    w.setTool(DrawMode::kBlock);
+    for (const Vec2& p : {Vec2(0, 0), Vec2(2, 0), Vec2(2, 1)})
+      QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf(p));
+    QTest::mouseDClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({0, 1}));
+    QTRY_VERIFY_WITH_TIMEOUT(!w.busy() && w.snapshot()->blocks.size() == 1, 20000);
+    QVERIFY(w.journal().contains("round 0.01"));
+    QCOMPARE(w.journal().last(), QString("block 0,0 2,0 2,1 0,1"));
+    QVERIFY(w.console()->text().contains("no rounding length set yet: round 0.01"));
+  }
+
   // A closed panel comes back from the View menu.
   void viewMenuReopensPanels() {
     MainWindow w;

@@ -8,6 +8,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QToolBar>
+#include <cmath>
 
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/main_window.hpp"
@@ -87,7 +88,24 @@ void MainWindow::onDrawn(DrawMode mode, const QVector<QPointF>& points) {
   for (const QPointF& p : points) d.add(Vec2(p.x(), p.y()));
   const std::string line = d.command(group_edit_->text().trimmed().toStdString(),
                                      material_box_->currentText().toStdString());
-  if (!line.empty()) runCommand(QString::fromStdString(line));
+  if (line.empty()) return;
+  // A block drawn before any rounding length is set: a default one first, stated (a hundredth
+  // of the block's shortest edge, as a round number), so the drawn shape is not lost.
+  if (mode == DrawMode::kBlock && (!shown_ || !(shown_->rounding > 0))) {
+    double shortest = 1e300;
+    for (qsizetype k = 0; k < points.size(); ++k) {
+      const QPointF e = points[(k + 1) % points.size()] - points[k];
+      shortest = std::min(shortest, std::hypot(e.x(), e.y()));
+    }
+    const double d_round = std::pow(10.0, std::floor(std::log10(0.01 * shortest)));
+    const QString round = QString("round %1").arg(d_round, 0, 'g', 3);
+    console_->append("no rounding length set yet: " + round +
+                         " (a hundredth of the block's shortest edge, rounded down); change "
+                         "it with 'round D' before drawing",
+                     false);
+    return runCommands({round, QString::fromStdString(line)});
+  }
+  runCommand(QString::fromStdString(line));
 }
 
 bool MainWindow::canUndo() const {

@@ -240,6 +240,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
   Snapshot s;
   s.title = title;
   s.cycle = m.cycle, s.time = m.time, s.dt = m.dt, s.ratio = m.ratio;
+  s.rounding = m.settings.rounding;
   if (m.dim == 3) {
     copy_blocks3(m, s);
     copy_catalogue(m, s);

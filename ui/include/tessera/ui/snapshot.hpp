@@ -71,6 +71,7 @@ struct Snapshot {
   std::string title;
   uint64_t cycle = 0;
   double time = 0, dt = 0, ratio = 1;
+  double rounding = 0;  // the corner rounding length (0: not set yet)
   std::vector<SnapshotBlock> blocks;
   std::vector<Vec2> local;  // block vertices relative to the centroid, unrotated
   std::vector<Vec2> start;  // deformable blocks: where each outline node started
