@@ -671,6 +671,16 @@ class TestGui : public QObject {
     QCOMPARE(w.view()->previewSegments(), size_t(4 * (5 * 8 + 5 * 9)));  // 10 courses
     wall->reject();
     QCOMPARE(w.journal().size(), 7);
+    // Gravity and damping have dialogs of their own.
+    CommandDialog* gravity = w.openDialog("gravity");
+    QVERIFY(gravity);
+    QCOMPARE(gravity->command(), QString("gravity 0 -9.81"));
+    gravity->reject();
+    CommandDialog* damping = w.openDialog("damping");
+    QVERIFY(damping);
+    damping->setValue("#mode", "global");
+    QCOMPARE(damping->command(), QString("damping global"));
+    damping->reject();
     // The joint set dialog, typed into; the traces show before the cut.
     CommandDialog* d = w.openDialog("jset");
     QVERIFY(d);

@@ -141,6 +141,19 @@ DialogSpec spec(const QString& name) {
              {"szz", "Out of plane", "Pa", "", "empty: nu (sxx + syy)"},
              {"ygradient", "Gradient with height", "Pa/m", "", "e.g. k rho g, rho g, 0"},
              {"y0", "Height of the given stress", "m", "", ""}}};
+  if (name == "gravity")
+    return {"Gravity",
+            "gravity",
+            {{"#gx", "Along x", "m/s²", "0", ""},
+             {"#gy", "Along y", "m/s²", "-9.81", "2D: -9.81 (y up); 3D: 0"},
+             {"#gz", "Along z", "m/s²", "", "3D models only: -9.81 (z up)"}}};
+  if (name == "damping")
+    return {"Damping",
+            "damping",
+            {{"#mode", "Kind", "", "local",
+              "local (static), global (adaptive viscous) or none (dynamic analysis)"},
+             {"#value", "Alpha or ratio", "", "",
+              "local: alpha (default 0.8); global: the power ratio removed (0.5)"}}};
   if (name == "assign")
     return {
         "Assign to the selection",
@@ -166,9 +179,11 @@ void MainWindow::buildModelMenu() {
                                                        {"zones", "&Zones…"},
                                                        {"assign", "Assign to selection…"},
                                                        {"boundary", "&Boundary…"},
-                                                       {"insitu", "&In-situ stress…"}};
+                                                       {"insitu", "&In-situ stress…"},
+                                                       {"gravity", "&Gravity…"},
+                                                       {"damping", "&Damping…"}};
   for (const auto& [name, text] : items) {
-    if (QString(name) == "assign") model->addSeparator();
+    if (QString(name) == "assign" || QString(name) == "gravity") model->addSeparator();
     const QString key = name;
     model->addAction(text, this, [this, key] { openDialog(key); });
   }
