@@ -112,6 +112,27 @@ class TestGui : public QObject {
     QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
     QCOMPARE(w.snapshot()->cycle, uint64_t(8000));
     QCOMPARE(w.charts()->chartCount(), 3);
+    // A chart exports for a spreadsheet (the points shown) and for a report (PNG, SVG).
+    const QString csv = dir_.filePath("chart.csv"), png = dir_.filePath("chart.png"),
+                  svg = dir_.filePath("chart.svg");
+    QVERIFY(w.charts()->exportChart(0, csv));
+    QFile table(csv);
+    QVERIFY(table.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList rows = QString::fromUtf8(table.readAll()).trimmed().split('\n');
+    QCOMPARE(rows.size(), w.charts()->pointCount(0) + 1);
+    QVERIFY(rows[0].startsWith("cycle,"));
+    QVERIFY(w.charts()->exportChart(0, png));
+    const QImage chart(png);
+    QVERIFY(chart.width() >= 800 && chart.height() >= 500);
+    int drawn = 0;
+    for (int y = 0; y < chart.height(); y += 5)
+      for (int x = 0; x < chart.width(); x += 5) drawn += chart.pixel(x, y) != qRgb(255, 255, 255);
+    QVERIFY(drawn > 200);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      chart.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/history_chart.png");
+    QVERIFY(w.charts()->exportChart(0, svg));
+    QVERIFY(QSvgRenderer(svg).isValid());
+    QVERIFY(!w.charts()->exportChart(0, dir_.filePath("chart.txt")));
     QVERIFY(w.windowTitle().contains("block_on_incline.tess"));
     // The free block slid down the slope: the tree lists its stage, the picture its motion.
     QCOMPARE(w.snapshot()->stages.size(), size_t(1));

@@ -22,11 +22,15 @@ class HistoryCharts : public QScrollArea {
   int chartCount() const { return static_cast<int>(charts_.size()); }
   // Points in the curve of series i.
   int pointCount(int i) const;
+  // Writes chart i to `path`: .png (its size on screen, at least 800 x 500), .svg, or .csv (the
+  // cycles and values shown). Each chart's right-click menu offers these. False if it cannot.
+  bool exportChart(int i, const QString& path) const;
 
  private:
   struct Chart {
     QLineSeries* series;
     QValueAxis *x, *y;
+    QWidget* view;
   };
   QWidget* box_;
   QVBoxLayout* layout_;
