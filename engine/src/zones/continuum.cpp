@@ -284,16 +284,8 @@ std::vector<std::array<uint32_t, 2>> boundary_edges(const ZoneMesh& mesh) {
 }
 
 std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh) {
-  // A face used by one tetrahedron only is on the surface. The face opposite corner k of a
-  // positive tetrahedron, taken in these orders, is counter-clockwise seen from outside.
-  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  auto key = [](std::array<uint32_t, 3> f) {
-    std::sort(f.begin(), f.end());
-    return f;
-  };
-  std::map<std::array<uint32_t, 3>, int> count;
-  for (const auto& t : mesh.tets)
-    for (const auto& f : kFace) ++count[key({t[f[0]], t[f[1]], t[f[2]]})];
+  // A face used by one tetrahedron only is on the surface (listed facing out, in zone order).
+  const OpenFaces open = open_faces(mesh);
   // A quadratic zone's mid-edge node between two of its corners.
   const auto mid = [&](size_t z, int i, int j) {
     for (int e = 0; e < 6; ++e)
@@ -305,9 +297,10 @@ std::vector<std::array<uint32_t, 3>> boundary_faces(const ZoneMesh3& mesh) {
   std::vector<std::array<uint32_t, 3>> out;
   for (size_t z = 0; z < mesh.tets.size(); ++z) {
     const auto& t = mesh.tets[z];
-    for (const auto& f : kFace) {
+    for (int k = 0; k < 4; ++k) {
+      const int* f = kTetFace[k];
       const std::array<uint32_t, 3> face{t[f[0]], t[f[1]], t[f[2]]};
-      if (count[key(face)] != 1) continue;
+      if (!open.count(face_key(mesh, z, k))) continue;
       if (mesh.mid.empty()) {
         out.push_back(face);
         continue;

@@ -169,58 +169,38 @@ C3t3 refine(const D& domain, double max_edge, const ZoneGrading3* grading,
   const Field edge{max_edge, grading, 1.0, stop},
       facet{max_edge, grading, 1.0 / std::sqrt(3.0), stop},
       cell{max_edge, grading, std::sqrt(3.0 / 8.0), stop};
-  namespace params = CGAL::parameters;
-  const auto run = [&](const Criteria& criteria) {
-    // The perturber draws from CGAL's default generator: seeded here, the same block gives the
-    // same mesh whatever ran before on this thread. It runs while its steps succeed: CGAL's
-    // default stops it after as much CPU time as the refinement took, so a busy machine meshed
-    // the same block differently (1659 zones against 1656).
-    CGAL::get_default_random() = CGAL::Random(0);
-    // A failure inside CGAL (e.g. "... is already inserted on surface", met where cuts meet at
-    // shallow angles) becomes the command's error; the debugging dump CGAL then writes into the
-    // working directory (dump-bug.mesh, dump-bug.binary.cgal) is removed if it was not there.
-    const bool had_dump = std::filesystem::exists("dump-bug.mesh");
-    try {
-      return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
-                                     params::perturb(params::time_limit = 0), params::no_exude());
-    } catch (const CGAL::Failure_exception& e) {
-      if (!had_dump) {
-        std::error_code ec;
-        std::filesystem::remove("dump-bug.mesh", ec);
-        std::filesystem::remove("dump-bug.binary.cgal", ec);
-      }
-      std::string why = e.message().empty() ? e.expression() : e.message();
-      while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
-      throw std::invalid_argument("CGAL's mesher failed (" + why +
-                                  "): try a slightly different edge= or fine=");
-    }
-  };
-  // Between pieces, a surface triangle's corners must lie on one face (else, with all three on
-  // some face, it may cut across a thin piece).
+  // Surface triangles within a tenth of the local size of the surface; between pieces, a
+  // surface triangle's corners on one face (else, with all three on some face, it may cut
+  // across a thin piece).
   const Field distance{max_edge, grading, 0.1, stop};
-  return run(Criteria(params::edge_size = edge, params::facet_angle = 25.0,
-                      params::facet_size = facet, params::facet_distance = distance,
-                      params::facet_topology = CGAL::FACET_VERTICES_ON_SAME_SURFACE_PATCH,
-                      params::cell_radius_edge_ratio = 2.0, params::cell_size = cell));
-}
-
-// A zone's faces, each facing out of it.
-constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-
-// The faces of zones met once: the body's surface, or with `by_piece` each piece's surface
-// (keyed by piece, then the face's sorted nodes; the value is the face as its zone lists it,
-// facing out).
-std::map<std::array<uint32_t, 4>, std::array<uint32_t, 3>> open_faces(const ZoneMesh3& mesh,
-                                                                      bool by_piece) {
-  std::map<std::array<uint32_t, 4>, std::array<uint32_t, 3>> open;
-  for (size_t z = 0; z < mesh.tets.size(); ++z)
-    for (const auto& f : kFace) {
-      const auto& t = mesh.tets[z];
-      std::array<uint32_t, 4> key{by_piece ? mesh.piece[z] : 0, t[f[0]], t[f[1]], t[f[2]]};
-      std::sort(key.begin() + 1, key.end());
-      if (!open.erase(key)) open.emplace(key, std::array<uint32_t, 3>{t[f[0]], t[f[1]], t[f[2]]});
+  namespace params = CGAL::parameters;
+  const Criteria criteria(params::edge_size = edge, params::facet_angle = 25.0,
+                          params::facet_size = facet, params::facet_distance = distance,
+                          params::facet_topology = CGAL::FACET_VERTICES_ON_SAME_SURFACE_PATCH,
+                          params::cell_radius_edge_ratio = 2.0, params::cell_size = cell);
+  // The perturber draws from CGAL's default generator: seeded here, the same block gives the
+  // same mesh whatever ran before on this thread. It runs while its steps succeed: CGAL's
+  // default stops it after as much CPU time as the refinement took, so a busy machine meshed
+  // the same block differently (1659 zones against 1656).
+  CGAL::get_default_random() = CGAL::Random(0);
+  // A failure inside CGAL (e.g. "... is already inserted on surface", met where cuts meet at
+  // shallow angles) becomes the command's error; the debugging dump CGAL then writes into the
+  // working directory (dump-bug.mesh, dump-bug.binary.cgal) is removed if it was not there.
+  const bool had_dump = std::filesystem::exists("dump-bug.mesh");
+  try {
+    return CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_lloyd(), params::no_odt(),
+                                   params::perturb(params::time_limit = 0), params::no_exude());
+  } catch (const CGAL::Failure_exception& e) {
+    if (!had_dump) {
+      std::error_code ec;
+      std::filesystem::remove("dump-bug.mesh", ec);
+      std::filesystem::remove("dump-bug.binary.cgal", ec);
     }
-  return open;
+    std::string why = e.message().empty() ? e.expression() : e.message();
+    while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
+    throw std::invalid_argument("CGAL's mesher failed (" + why +
+                                "): try a slightly different edge= or fine=");
+  }
 }
 
 // The mesher may leave a flat zone on the surface: four nodes on one face of the block, no
@@ -242,11 +222,7 @@ void drop_flat_caps(ZoneMesh3& mesh) {
       const Vec3 &a = mesh.nodes[t[0]], &b = mesh.nodes[t[1]], &c = mesh.nodes[t[2]];
       const double six_v = (b - a).cross(c - a).dot(mesh.nodes[t[3]] - a);
       int outer = 0;
-      for (const auto& f : kFace) {
-        std::array<uint32_t, 4> k{0, t[f[0]], t[f[1]], t[f[2]]};
-        std::sort(k.begin() + 1, k.end());
-        outer += static_cast<int>(open.count(k));
-      }
+      for (int f = 0; f < 4; ++f) outer += static_cast<int>(open.count(face_key(mesh, z, f)));
       drop[z] = std::abs(six_v) <= 1e-9 * longest * longest * longest && outer >= 2;
       dropped = dropped || drop[z];
     }
@@ -403,6 +379,28 @@ ZoneMesh3 exuded_zones(const C3t3& plain, const CellsOf& cells_of,
 }
 
 }  // namespace
+
+std::array<uint32_t, 4> face_key(const ZoneMesh3& mesh, size_t z, int f, bool by_piece) {
+  const auto& t = mesh.tets[z];
+  const int* corner = kTetFace[f];
+  std::array<uint32_t, 4> key{by_piece ? mesh.piece[z] : 0, t[corner[0]], t[corner[1]],
+                              t[corner[2]]};
+  std::sort(key.begin() + 1, key.end());
+  return key;
+}
+
+OpenFaces open_faces(const ZoneMesh3& mesh, bool by_piece) {
+  OpenFaces open;
+  for (size_t z = 0; z < mesh.tets.size(); ++z)
+    for (int f = 0; f < 4; ++f) {
+      const auto key = face_key(mesh, z, f, by_piece);
+      const auto& t = mesh.tets[z];
+      if (!open.erase(key))
+        open.emplace(
+            key, std::array<uint32_t, 3>{t[kTetFace[f][0]], t[kTetFace[f][1]], t[kTetFace[f][2]]});
+    }
+  return open;
+}
 
 double min_dihedral_angle(const std::array<Vec3, 4>& p) {
   // Each edge (i, j) is shared by the faces through k and through l: the angle between them.

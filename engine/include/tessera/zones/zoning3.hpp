@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,16 @@ struct ZoneMesh3 {
 ZoneMesh3 zone_pieces(const std::vector<Polyhedron>& pieces, double max_edge,
                       size_t max_zones = 2000000, const ZoneGrading3* grading = nullptr,
                       const std::atomic<bool>* stop = nullptr);
+
+// A zone's four faces: the face opposite corner k, each listed so that it faces out of a
+// positive zone (counter-clockwise seen from outside).
+inline constexpr int kTetFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+// Face f of zone z as a key: (its piece with `by_piece`, else 0; then its nodes sorted).
+std::array<uint32_t, 4> face_key(const ZoneMesh3& mesh, size_t z, int f, bool by_piece = false);
+// The faces met by one zone only, by key, each with its nodes as its zone lists them: the
+// body's surface, or with `by_piece` each piece's (faces between pieces included).
+using OpenFaces = std::map<std::array<uint32_t, 4>, std::array<uint32_t, 3>>;
+OpenFaces open_faces(const ZoneMesh3& mesh, bool by_piece = false);
 
 // A point as a script writes it (x,y,z, four significant digits), for messages about zones.
 inline std::string point_text(const Vec3& p) {
