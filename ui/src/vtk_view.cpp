@@ -298,34 +298,27 @@ void VtkView::rebuild() {
   for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
   // 3D: every point at its height towards the viewer, the nearest face just below the 2D
   // overlays (at heights 0.01-0.025), outlines and contact bars a hair in front of their faces.
-  double top = -1e300;
+  double top = -1e300, bottom = 1e300;
   for (const auto& p : scene_.polygons)
-    for (double d : p.depth) top = std::max(top, d);
-  double bottom = top;
-  for (const auto& p : scene_.polygons)
-    for (double d : p.depth) bottom = std::min(bottom, d);
+    for (double d : p.depth) top = std::max(top, d), bottom = std::min(bottom, d);
+  if (!(top >= bottom)) top = bottom = 0.0;  // no 3D faces
   const double lift = 1e-4 * std::max({top - bottom, (scene_.hi - scene_.lo).norm(), 1e-12});
-  const auto heights = [&](const std::vector<const ScenePolygon*>& list, double over) {
-    std::vector<std::vector<double>> h;
-    for (const ScenePolygon* p : list) {
-      h.emplace_back();
-      for (double d : p->depth) h.back().push_back(d - top - 3 * lift + over);
-    }
-    return h;
-  };
+  // A height towards the viewer as VTK's z: the nearest face three lifts below zero.
+  const auto z_of = [&](double d) { return d - top - 3 * lift; };
   if (scene_.three) {
-    std::vector<const ScenePolygon*> all, outlined;
-    std::vector<std::vector<Vec2>> outlined_points;
+    std::vector<std::vector<double>> face_z, edge_z;
+    std::vector<std::vector<Vec2>> outlined;
     std::vector<Rgb> outline_colours;
     for (const auto& p : scene_.polygons) {
-      all.push_back(&p);
-      if (p.outline)
-        outlined.push_back(&p), outlined_points.push_back(p.points),
-            outline_colours.push_back(p.colour);
+      face_z.emplace_back();
+      for (double d : p.depth) face_z.back().push_back(z_of(d));
+      if (!p.outline) continue;
+      outlined.push_back(p.points), outline_colours.push_back(p.colour);
+      edge_z.push_back(face_z.back());
+      for (double& z : edge_z.back()) z += lift;
     }
-    const auto face_heights = heights(all, 0.0), edge_heights = heights(outlined, lift);
-    fill_polygons(blocks_, polys, colours, 0.0, &face_heights);
-    fill_polygons(edges_, outlined_points, outline_colours, 0.0, &edge_heights);
+    fill_polygons(blocks_, polys, colours, 0.0, &face_z);
+    fill_polygons(edges_, outlined, outline_colours, 0.0, &edge_z);
   } else {
     fill_polygons(blocks_, polys, colours, 0.0);
     // Block outlines above the zones, which sit above the block fills.
@@ -347,8 +340,7 @@ void VtkView::rebuild() {
         colours.push_back(b.colour);
   if (scene_.three) {
     std::vector<std::vector<double>> bar_heights;
-    for (const auto& b : scene_.bars)
-      bar_heights.emplace_back(4, b.depth - top - 3 * lift + 2 * lift);
+    for (const auto& b : scene_.bars) bar_heights.emplace_back(4, z_of(b.depth) + 2 * lift);
     fill_polygons(bars_, polys, colours, 0.0, &bar_heights);
   } else {
     fill_polygons(bars_, polys, colours, 0.01);
