@@ -485,33 +485,46 @@ class TestExamples : public QObject {
                                       "delete group=brick\n"
                                       "block box 0,20,0 10,22,10 material=rock group=wall\n"
                                       "block box 4,24,4 5,25,5 material=rock group=hidden\n"
-                                      "figure behind_wall.png size=1200,900 view=180,0\n");
+                                      "figure behind_wall.png size=1200,900 view=180,0\n"
+                                      "figure cut_open.png size=1200,900 view=180,0 "
+                                      "cut=90,180,5,23,5\n");
     const Run r = run_script(script);
     QCOMPARE(r.exit_code, 0);
-    // Blue-grey pixels (the second group's colour, 120,150,190, shaded) against all coloured
-    // ones (not white, not the grey of text and outlines), left of the legend (which starts at
-    // 916 pixels: a 264-pixel column and 20-pixel margins).
-    const auto shares = [](const QImage& img) {
-      long blue = 0, coloured = 0;
+    // Pixels of one group's colour (shaded: 0.6 to 1 times it) against all coloured ones (not
+    // white, not the grey of text and outlines), left of the legend (which starts at 916 pixels:
+    // a 264-pixel column and 20-pixel margins). The brick is the second group (120,150,190),
+    // the hidden block the fourth (140,180,120): the groups stay after `delete`.
+    const auto shares = [](const QImage& img, const auto& is_group) {
+      long group = 0, coloured = 0;
       for (int y = 0; y < img.height(); ++y)
         for (int x = 0; x < 906; ++x) {
           const QColor c = img.pixelColor(x, y);
           if (c.saturation() < 40) continue;
           ++coloured;
-          blue += c.blue() > c.red() + 30;
+          group += is_group(c);
         }
-      return std::pair<long, long>{blue, coloured};
+      return std::pair<long, long>{group, coloured};
     };
-    const auto [brick, model] = shares(QImage(r.dir + "/on_footing.png"));
+    const auto brick_colour = [](const QColor& c) { return c.blue() > c.red() + 30; };
+    const auto hidden_colour = [](const QColor& c) {
+      return c.green() > c.red() + 15 && c.green() > c.blue() + 25;
+    };
+    const auto [brick, model] = shares(QImage(r.dir + "/on_footing.png"), brick_colour);
     const double share = double(brick) / double(model);
     qInfo("brick on the footing: %ld of %ld coloured pixels (%.2f%%, its silhouette 3.01%%)", brick,
           model, 100 * share);
     QVERIFY(model > 10000);
     QVERIFY(std::abs(share - 0.0301) < 0.1 * 0.0301);
-    const auto [hidden, shown] = shares(QImage(r.dir + "/behind_wall.png"));
+    const auto [hidden, shown] = shares(QImage(r.dir + "/behind_wall.png"), hidden_colour);
     qInfo("block behind the wall: %ld of %ld coloured pixels", hidden, shown);
     QVERIFY(shown > 10000);
     QCOMPARE(hidden, 0L);
+    // Cut by a vertical plane facing the viewer behind the wall (y < 23 cut away): the wall is
+    // gone and the block shows whole (the view fitted to it).
+    const auto [opened, left] = shares(QImage(r.dir + "/cut_open.png"), hidden_colour);
+    qInfo("cut open: %ld of %ld coloured pixels are the block behind the wall", opened, left);
+    QVERIFY(opened > 10000);
+    QVERIFY(opened >= left - 10);  // antialiased corners of the outline
   }
 
   void column3dSettlesLikeTheClosedForm() {

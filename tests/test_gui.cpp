@@ -358,6 +358,15 @@ class TestGui : public QObject {
     QVERIFY(open_shown(w, path));
     QVERIFY(w.snapshot()->three);
     QCOMPARE(w.snapshot()->blocks.size(), size_t(1 + 6 * 6 + 3));
+    // The sub-contacts inside the wall show through translucent blocks.
+    auto* see_through = w.findChild<QAction*>("see_through");
+    QVERIFY(see_through);
+    see_through->trigger();
+    QTest::qWait(100);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
+                                       "/view_3d_contacts.png");
+    see_through->trigger();
     ViewOptions o = w.viewOptions();
     o.contacts = ContactShow::kOff;
     w.setViewOptions(o);
@@ -393,11 +402,11 @@ class TestGui : public QObject {
   // covered most of it), and a block behind a wall, seen level from the south, has no pixel.
   void windowHidesWhatIsBehindIn3d() {
     // Pixels of the second group's colour (120,150,190, shaded) among all coloured ones, left
-    // of the colour bar.
+    // of the colour bar and right of the triad.
     const auto shares = [](const QImage& img) {
       long blue = 0, coloured = 0;
       for (int y = 0; y < img.height(); ++y)
-        for (int x = 0; x < img.width() * 8 / 10; ++x) {
+        for (int x = img.width() * 15 / 100; x < img.width() * 8 / 10; ++x) {
           const QColor c = img.pixelColor(x, y);
           if (c.saturation() < 40) continue;
           ++coloured;
@@ -434,6 +443,116 @@ class TestGui : public QObject {
     QCOMPARE(hidden, 0L);
     if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
       level.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d_behind.png");
+  }
+
+  // The 3D camera: a click picks the block under it through VTK's cell picker (after turning
+  // too), the triad shows north, a cut plane opens the wall to what is behind it, and the
+  // perspective switch keeps the model in view.
+  void threeDCameraPicksAndCuts() {
+    const QString path = write_script(dir_, "cut3d.tess",
+                                      "dimension 3\nmaterial define rock density=2500\n"
+                                      "block box 0,20,0 10,22,10 material=rock group=wall\n"
+                                      "block box 4,24,4 5,25,5 material=rock group=hidden\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    ViewOptions o = w.viewOptions();
+    o.azimuth = 180, o.elevation = 0;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    // The triad's x axis (east, red) in the lower left corner.
+    const auto reds = [](const QImage& img) {
+      long n = 0;
+      for (int y = img.height() * 7 / 10; y < img.height() * 9 / 10; ++y)
+        for (int x = 0; x < img.width() * 15 / 100; ++x) {
+          const QColor c = img.pixelColor(x, y);
+          n += c.red() > 150 && c.green() < 80 && c.blue() < 80;
+        }
+      return n;
+    };
+    const QImage before = w.view()->grabFramebuffer();
+    QVERIFY(reds(before) > 20);
+    // The hidden block's pixels (blue-grey, right of the triad, left of the colour bar).
+    const auto hidden_pixels = [](const QImage& img) {
+      std::vector<QPoint> at;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = img.width() * 15 / 100; x < img.width() * 8 / 10; ++x) {
+          const QColor c = img.pixelColor(x, y);
+          if (c.saturation() >= 40 && c.blue() > c.red() + 30) at.push_back({x, y});
+        }
+      return at;
+    };
+    QVERIFY(hidden_pixels(before).empty());
+    QSignalSpy picks(w.view(), &VtkView::picked);
+    const QPoint middle(w.view()->width() / 2 - w.view()->width() / 10, w.view()->height() / 2);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, middle);
+    QCOMPARE(picks.count(), 1);
+    QCOMPARE(picks.takeFirst().at(0).toInt(), 0);  // the wall
+    // Cut away everything south of y = 23: the wall goes, the block behind it shows and is
+    // picked where it shows.
+    o.cut = true, o.cut_dip = 90, o.cut_dip_direction = 180;
+    o.cut_point = Vec3(5, 23, 5);
+    w.setViewOptions(o);
+    QTest::qWait(100);
+    const QImage cut = w.view()->grabFramebuffer();
+    const std::vector<QPoint> shown = hidden_pixels(cut);
+    qInfo("cut open: %zu pixels of the block behind the wall", shown.size());
+    QVERIFY(shown.size() > 500);
+    QVERIFY(w.view()->scene().caption.find("cut by the plane 90/180") != std::string::npos);
+    const QPoint block = shown[shown.size() / 2] / w.view()->devicePixelRatioF();
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, block);
+    QCOMPARE(picks.count(), 1);
+    QCOMPARE(picks.takeFirst().at(0).toInt(), 1);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      cut.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d_cut.png");
+    // A figure of the current view keeps the cut and the camera's window: the block, no wall.
+    const QString figure = dir_.filePath("cut_view.png");
+    w.exportFigure(figure, 800, 600);
+    const QImage exported(figure);
+    long block_pixels = 0, wall_pixels = 0;
+    for (int y = 0; y < exported.height(); ++y)
+      for (int x = 0; x < exported.width() * 3 / 4; ++x) {
+        const QColor c = exported.pixelColor(x, y);
+        if (c.saturation() < 40) continue;
+        block_pixels += c.blue() > c.red() + 30;
+        wall_pixels += c.red() > c.blue() + 30;
+      }
+    qInfo("exported cut view: %ld pixels of the block, %ld of the wall", block_pixels, wall_pixels);
+    QVERIFY(block_pixels > 500);
+    QCOMPARE(wall_pixels, 0L);
+    // Turned a quarter round by a right drag: still picks what is under the cursor.
+    o.cut = false;
+    w.setViewOptions(o);
+    const QPoint c(w.view()->width() / 2, w.view()->height() / 2);
+    QTest::mousePress(w.view(), Qt::RightButton, {}, c);
+    for (int k = 1; k <= 5; ++k) {
+      const QPointF to(c + QPoint(-45 * k, 0));
+      QMouseEvent move(QEvent::MouseMove, to, to, Qt::RightButton, Qt::RightButton, Qt::NoModifier);
+      QApplication::sendEvent(w.view(), &move);
+    }
+    QTest::mouseRelease(w.view(), Qt::RightButton, {}, c + QPoint(-225, 0));
+    QCOMPARE(w.viewOptions().azimuth, 270.0);  // 180 + 0.4 per pixel
+    QCOMPARE(w.view()->azimuth(), 270.0);
+    QTest::qWait(100);
+    QVERIFY(reds(w.view()->grabFramebuffer()) > 0);
+    // From the west the wall (x = 0 face) is nearest, and the block is beside it, not behind.
+    const QImage west = w.view()->grabFramebuffer();
+    const std::vector<QPoint> side = hidden_pixels(west);
+    QVERIFY(side.size() > 200);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {},
+                      side[side.size() / 2] / w.view()->devicePixelRatioF());
+    QCOMPARE(picks.count(), 1);
+    QCOMPARE(picks.takeFirst().at(0).toInt(), 1);
+    // Perspective: the same model, still in view.
+    auto* perspective = w.findChild<QAction*>("perspective");
+    QVERIFY(perspective);
+    perspective->trigger();
+    QVERIFY(w.view()->perspective());
+    QTest::qWait(100);
+    QVERIFY(hidden_pixels(w.view()->grabFramebuffer()).size() > 100);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
+                                       "/view_3d_perspective.png");
   }
 
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in

@@ -329,25 +329,61 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
       ": normal force, full at " + number(fwide) + unit + " (largest " + number(fmax) + ")";
 }
 
-// Displacement arrows at block centroids, the longest a tenth of the model's size.
+// Displacement arrows at block centroids, the longest a tenth of the model's size (3D: in
+// model coordinates, and projected for figures).
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
   if (!o.vectors) return;
+  const auto displacement = [&](const SnapshotBlock& b) {
+    return Vec3(b.x - b.x_ref, b.y - b.y_ref, s.three ? b.z - b.z_ref : 0.0);
+  };
   double dmax = 0;
-  for (const auto& b : s.blocks) dmax = std::max(dmax, std::hypot(b.x - b.x_ref, b.y - b.y_ref));
+  for (const auto& b : s.blocks) dmax = std::max(dmax, displacement(b).norm());
   if (dmax <= 0) return;
   out.arrow_scale = 0.1 * size / dmax;
+  const ViewAxes view(o);
   for (const auto& b : s.blocks) {
-    const Vec2 d(b.x - b.x_ref, b.y - b.y_ref);
+    const Vec3 d = displacement(b);
     if (d.norm() < 1e-3 * dmax) continue;
-    const Vec2 tail(b.x_ref + o.magnify * d.x(), b.y_ref + o.magnify * d.y());
-    out.arrows.push_back({tail, tail + out.arrow_scale * d});
+    SceneArrow arrow;
+    arrow.tail3 = Vec3(b.x_ref, b.y_ref, s.three ? b.z_ref : 0.0) + o.magnify * d;
+    arrow.head3 = arrow.tail3 + out.arrow_scale * d;
+    arrow.tail = s.three ? view(arrow.tail3) : Vec2(arrow.tail3.head<2>());
+    arrow.head = s.three ? view(arrow.head3) : Vec2(arrow.head3.head<2>());
+    out.arrows.push_back(arrow);
   }
   out.caption += "   arrows: largest displacement " + number(dmax) + " m";
 }
+
+// The 3D contact bars for a camera: a square in each sub-contact's plane, its side the length
+// the sub-contact stands for, shrunk to 35% at no force (the bars' width shows the normal force),
+// moving with block a like the faces.
+void set_bar_squares3(const Snapshot& s, const ViewOptions& o, Scene& out) {
+  double wmax = 0;
+  for (const SceneBar& bar : out.bars)
+    wmax = std::max(wmax, (bar.corners[3] - bar.corners[0]).norm());
+  for (SceneBar& bar : out.bars) {
+    const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
+    Vec3 at = c.point3;
+    if (c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size()) {
+      const SnapshotBlock& a = s.blocks[static_cast<size_t>(c.a)];
+      at += (o.magnify - 1.0) * Vec3(a.x - a.x_ref, a.y - a.y_ref, a.z - a.z_ref);
+    }
+    const Vec3 n = c.normal3.norm() > 0 ? Vec3(c.normal3.normalized()) : Vec3::UnitZ();
+    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    const double width = (bar.corners[3] - bar.corners[0]).norm(),
+                 length = (bar.corners[1] - bar.corners[0]).norm();
+    const double half = 0.5 * length * (0.35 + 0.65 * width / std::max(wmax, 1e-300));
+    bar.world[0] = at - half * t1 - half * t2;
+    bar.world[1] = at + half * t1 - half * t2;
+    bar.world[2] = at + half * t1 + half * t2;
+    bar.world[3] = at - half * t1 + half * t2;
+  }
+}
 }  // namespace
 
-Scene build_scene(const Snapshot& s, const ViewOptions& o) {
+Scene build_scene(const Snapshot& s, const ViewOptions& o, bool camera) {
   Scene out;
+  out.camera = camera && s.three;
   out.title = o.title.empty() ? s.title : o.title;
   char buf[120];
   std::snprintf(buf, sizeof buf, "cycle %llu   time %.4g s   ratio %.2e",
@@ -369,8 +405,22 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o) {
     const double size = std::max((hi - lo).norm(), 1e-9);
     add_contacts(flat, o, out, size);
     set_bar_depths3(s, o, out);
-    add_arrows(flat, o, out, size);
+    if (out.camera) set_bar_squares3(s, o, out);
+    add_arrows(s, o, out, size);
+    if (o.cut) {
+      // What the cut takes away: sub-contacts and arrows above the plane.
+      std::erase_if(out.bars, [&](const SceneBar& bar) {
+        return cut_away(o, s.contacts[static_cast<size_t>(bar.contact)].point3);
+      });
+      std::erase_if(out.arrows, [&](const SceneArrow& a) { return cut_away(o, a.tail3); });
+      char cut[120];
+      std::snprintf(cut, sizeof cut, "   cut by the plane %.0f/%03.0f through %s, %s, %s",
+                    o.cut_dip, o.cut_dip_direction, number(o.cut_point.x()).c_str(),
+                    number(o.cut_point.y()).c_str(), number(o.cut_point.z()).c_str());
+      out.caption += cut;
+    }
     out.lo = lo, out.hi = hi;
+    out.azimuth = o.azimuth, out.elevation = o.elevation;
     char view[80];
     std::snprintf(view, sizeof view, "   view from azimuth %.0f, elevation %.0f", o.azimuth,
                   o.elevation);

@@ -7,26 +7,44 @@
 
 namespace tessera::ui {
 
+ViewAxes::ViewAxes(const ViewOptions& o) {
+  const double a = o.azimuth * std::numbers::pi / 180, e = o.elevation * std::numbers::pi / 180;
+  eye = Vec3(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
+  right = Vec3(-std::cos(a), std::sin(a), 0.0);
+  up = eye.cross(right);
+}
+
 namespace {
-// View axes: right and up on the screen, and towards the viewer.
-struct View {
-  Vec3 right, up, eye;
-  explicit View(const ViewOptions& o) {
-    const double a = o.azimuth * std::numbers::pi / 180, e = o.elevation * std::numbers::pi / 180;
-    eye = Vec3(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
-    right = Vec3(-std::cos(a), std::sin(a), 0.0);
-    up = eye.cross(right);
+// The cut's upward normal.
+Vec3 cut_normal(const ViewOptions& o) {
+  const double dip = o.cut_dip * std::numbers::pi / 180,
+               dir = o.cut_dip_direction * std::numbers::pi / 180;
+  return {std::sin(dip) * std::sin(dir), std::sin(dip) * std::cos(dir), std::cos(dip)};
+}
+
+// A polygon's part below the cut (Sutherland-Hodgman against one plane).
+void clip_below(const ViewOptions& o, const std::vector<Vec3>& in, std::vector<Vec3>& out) {
+  out.clear();
+  const Vec3 n = cut_normal(o);
+  for (size_t k = 0; k < in.size(); ++k) {
+    const Vec3 &a = in[k], &b = in[(k + 1) % in.size()];
+    const double da = n.dot(a - o.cut_point), db = n.dot(b - o.cut_point);
+    if (da <= 0) out.push_back(a);
+    if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
   }
-  Vec2 operator()(const Vec3& p) const { return {p.dot(right), p.dot(up)}; }
-};
+}
 
 Vec3 displacement(const SnapshotBlock& b) {
   return {b.x - b.x_ref, b.y - b.y_ref, b.z - b.z_ref};
 }
 }  // namespace
 
+bool cut_away(const ViewOptions& o, const Vec3& p) {
+  return o.cut && cut_normal(o).dot(p - o.cut_point) > 0;
+}
+
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
-  const View view(o);
+  const ViewAxes view(o);
   Snapshot flat;
   flat.three = true;
   flat.blocks = s.blocks;
@@ -46,7 +64,7 @@ Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
 }
 
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
-  const View view(o);
+  const ViewAxes view(o);
   for (SceneBar& bar : out.bars) {
     if (bar.contact < 0 || static_cast<size_t>(bar.contact) >= s.contacts.size()) continue;
     const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
@@ -61,7 +79,7 @@ void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
 void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>& colours,
                 Scene& out,
                 const std::function<std::optional<Rgb>(const SnapshotZone&)>& zone_colour) {
-  const View view(o);
+  const ViewAxes view(o);
   // Shaded by how squarely the polygon faces the viewer.
   const auto shaded = [](Rgb base, double facing) {
     const double light = 0.6 + 0.4 * facing;
@@ -71,17 +89,22 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     return Rgb{shade(base.r), shade(base.g), shade(base.b)};
   };
   // A polygon of world points if it faces the viewer.
-  const auto show = [&](const std::vector<Vec3>& pts, int block, Rgb base, bool outline) {
+  std::vector<Vec3> below;
+  const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline) {
     Vec3 n = Vec3::Zero();
-    for (size_t k = 0; k < pts.size(); ++k) n += pts[k].cross(pts[(k + 1) % pts.size()]);
+    for (size_t k = 0; k < face.size(); ++k) n += face[k].cross(face[(k + 1) % face.size()]);
     const double facing = n.normalized().dot(view.eye);
-    if (!(facing > 1e-9)) return;
+    if (!(facing > 1e-9) && !out.camera && !o.cut) return;
+    if (o.cut) clip_below(o, face, below);
+    const std::vector<Vec3>& pts = o.cut ? below : face;
+    if (pts.size() < 3) return;
     ScenePolygon polygon;
     polygon.block = block;
     polygon.outline = outline;
     for (const Vec3& p : pts)
       polygon.points.push_back(view(p)), polygon.depth.push_back(p.dot(view.eye));
-    polygon.colour = shaded(base, facing);
+    if (out.camera) polygon.world = pts;
+    polygon.colour = out.camera ? base : shaded(base, std::abs(facing));
     out.polygons.push_back(std::move(polygon));
   };
   // Faces of deformable blocks drawn by their zones' surface triangles (tris3 come grouped by

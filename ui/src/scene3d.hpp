@@ -12,13 +12,25 @@
 
 namespace tessera::ui {
 
+// The view's axes: right and up on the screen, and towards the viewer (the eye).
+struct ViewAxes {
+  Vec3 right, up, eye;
+  explicit ViewAxes(const ViewOptions& o);
+  Vec2 operator()(const Vec3& p) const { return {p.dot(right), p.dot(up)}; }
+};
+
+// Whether a point is cut away by the view's cut (ViewOptions::cut): it lies above the plane.
+bool cut_away(const ViewOptions& o, const Vec3& p);
+
 // The snapshot with block centroids, displacements and sub-contacts projected onto the view
 // plane (its 2D fields), for the contact bars and displacement arrows.
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o);
 // The contact bars' heights towards the viewer (the sub-contacts' points, magnified like the
 // blocks), for bars built from the projected snapshot.
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out);
-// Block faces as polygons in view coordinates, coloured per block. With `zone_colour`, the
+// Block faces as polygons in view coordinates, coloured per block (for a camera, Scene::camera:
+// every face, unshaded, with its world points). A cut clips the faces to the part below it and
+// keeps the faces turned away, whose inside then shows through the opening. With `zone_colour`, the
 // faces of deformable blocks are drawn as their surface triangles (on the magnified nodes), each
 // in the colour of the zone it bounds; a zone given no colour (null) leaves its triangle out.
 void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>& colours,

@@ -104,7 +104,7 @@ void MainWindow::showStageResult(int i) {
   shown_ = result;
   ViewOptions o = options_;
   o.title = stageTitle(i);
-  view_->showScene(build_scene(*shown_, o));
+  view_->showScene(build_scene(*shown_, o, true));
   statusBar()->showMessage(
       QString("showing the results of stage %1 (cycle %2)").arg(i + 1).arg(shown_->cycle));
 }

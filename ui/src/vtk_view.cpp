@@ -2,12 +2,16 @@
 #include "tessera/ui/vtk_view.hpp"
 
 #include <vtkActor.h>
+#include <vtkAxesActor.h>
 #include <vtkAxisActor2D.h>
 #include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellPicker.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkIntArray.h>
 #include <vtkLookupTable.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -28,45 +32,25 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vtk_polydata.hpp"
+
 namespace tessera::ui {
 
 namespace {
-// A polydata of filled polygons with one RGB colour per cell, at height z, or (3D scenes) each
-// point at its own height towards the viewer, so that the depth buffer hides what is behind.
-void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec2>>& polys,
-                   const std::vector<Rgb>& colours, double z,
-                   const std::vector<std::vector<double>>* heights = nullptr) {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetNumberOfComponents(3);
-  rgb->SetName("colour");
-  for (size_t i = 0; i < polys.size(); ++i) {
-    cells->InsertNextCell(static_cast<int>(polys[i].size()));
-    for (size_t k = 0; k < polys[i].size(); ++k)
-      cells->InsertCellPoint(points->InsertNextPoint(polys[i][k].x(), polys[i][k].y(),
-                                                     heights ? (*heights)[i][k] : z));
-    const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
-    rgb->InsertNextTypedTuple(c);
-  }
-  pd->Initialize();
-  pd->SetPoints(points);
-  pd->SetPolys(cells);
-  pd->GetCellData()->SetScalars(rgb);
+// 2D polygons at height z.
+std::vector<std::vector<Vec3>> at_height(const std::vector<std::vector<Vec2>>& polys, double z) {
+  std::vector<std::vector<Vec3>> out(polys.size());
+  for (size_t i = 0; i < polys.size(); ++i)
+    for (const Vec2& p : polys[i]) out[i].emplace_back(p.x(), p.y(), z);
+  return out;
 }
 
-// Line segments as a polydata of line cells, just above the model.
-void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec2, 2>>& segments) {
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> lines;
-  for (const auto& s : segments) {
-    const vtkIdType ids[2] = {pts->InsertNextPoint(s[0].x(), s[0].y(), 0.025),
-                              pts->InsertNextPoint(s[1].x(), s[1].y(), 0.025)};
-    lines->InsertNextCell(2, ids);
-  }
-  pd->Initialize();
-  pd->SetPoints(pts);
-  pd->SetLines(lines);
+// 2D line segments just above the model.
+void fill_segments(vtkPolyData* pd, const std::vector<std::array<Vec2, 2>>& segments) {
+  std::vector<std::array<Vec3, 2>> lifted;
+  for (const auto& s : segments)
+    lifted.push_back({Vec3(s[0].x(), s[0].y(), 0.025), Vec3(s[1].x(), s[1].y(), 0.025)});
+  fill_lines(pd, lifted);
 }
 
 void set_direct_colours(vtkActor* actor, vtkPolyData* pd, bool filled = false) {
@@ -137,7 +121,7 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   window_->SetFrameBlitModeToBlitToCurrent();
   // The model in its own viewport on a second layer, over a frame that holds the title, caption
   // and colour bars in margins the model never covers, however it is zoomed or panned.
-  window_->SetNumberOfLayers(2);
+  window_->SetNumberOfLayers(3);
   window_->AddRenderer(frame_);
   window_->AddRenderer(renderer_);
   frame_->SetLayer(0);
@@ -147,6 +131,35 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->SetViewport(kModelViewport[0], kModelViewport[1], kModelViewport[2],
                          kModelViewport[3]);
   renderer_->GetActiveCamera()->ParallelProjectionOn();
+  // 3D: the triad in the lower left corner, over the frame (its own layer, its own depth).
+  triad_->SetLayer(2);
+  triad_->SetViewport(0.0, 0.1, 0.15, 0.3);
+  triad_->InteractiveOff();
+  triad_->AddActor(triad_axes_);
+  triad_->SetDraw(false);
+  window_->AddRenderer(triad_);
+  triad_axes_->SetXAxisLabelText("E");
+  triad_axes_->SetYAxisLabelText("N");
+  triad_axes_->SetZAxisLabelText("Up");
+  triad_axes_->SetShaftTypeToCylinder();
+  triad_axes_->SetCylinderRadius(0.03);
+  triad_axes_->SetConeRadius(0.35);
+  triad_axes_->SetTotalLength(1, 1, 1);
+  for (vtkCaptionActor2D* label :
+       {triad_axes_->GetXAxisCaptionActor2D(), triad_axes_->GetYAxisCaptionActor2D(),
+        triad_axes_->GetZAxisCaptionActor2D()}) {
+    label->GetTextActor()->SetTextScaleModeToNone();
+    label->GetCaptionTextProperty()->SetFontSize(14);
+    label->GetCaptionTextProperty()->SetColor(0, 0, 0);
+    label->GetCaptionTextProperty()->ShadowOff();
+    label->GetCaptionTextProperty()->ItalicOff();
+  }
+  picker_->SetTolerance(0.002);
+  picker_->PickFromListOn();
+  picker_->AddPickList(blocks_actor_);
+  picker_->AddPickList(bars_actor_);
+  // Faces a hair behind the outlines and contact squares drawn on them.
+  vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
   set_direct_colours(blocks_actor_, blocks_, true);
   set_direct_colours(zones_actor_, zones_, true);
   set_direct_colours(edges_actor_, edges_);
@@ -154,6 +167,8 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   edges_actor_->GetProperty()->SetRepresentationToWireframe();
   edges_actor_->GetProperty()->SetColor(0.25, 0.25, 0.25);
   set_direct_colours(bars_actor_, bars_, true);
+  // 3D sub-contacts lie on the faces they join: drawn a hair in front.
+  bars_actor_->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
   set_line_colour(arrows_actor_, arrows_, 0, 0, 0, 1.5);
   set_line_colour(band_actor_, band_, 0.85, 0.1, 0.1, 2.0);
   band_actor_->GetProperty()->SetPointSize(7.0);
@@ -162,8 +177,10 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   for (vtkActor* a :
        {blocks_actor_.Get(), zones_actor_.Get(), edges_actor_.Get(), bars_actor_.Get(),
         arrows_actor_.Get(), band_actor_.Get(), preview_actor_.Get(), highlight_actor_.Get()}) {
-    // A flat 2D picture: colours as given, no shading.
+    // A flat 2D picture: colours as given, no shading (3D faces: rebuild).
     a->GetProperty()->LightingOff();
+    a->GetProperty()->SetAmbient(0.6);
+    a->GetProperty()->SetDiffuse(0.4);
     renderer_->AddActor(a);
   }
   for (vtkScalarBarActor* bar : {scalar_bar_.Get(), contacts_bar_.Get()}) {
@@ -278,91 +295,69 @@ void VtkView::placeAxes() {
 
 void VtkView::paintGL() {
   placeAxes();
+  placeTriad();
   window_->SetReadyForRendering(true);
   window_->SetIsCurrent(true);
   window_->Render();
 }
 
 void VtkView::showScene(const Scene& scene, bool fit) {
-  const bool first = !has_scene_;
+  const bool first = !has_scene_ || scene.three != scene_.three;
   scene_ = scene;
   has_scene_ = true;
   rebuild();
-  if (first || fit) resetCamera();
+  // A 3D scene built for another view (the options changed) turns the camera there.
+  const bool turn = scene_.three && (scene_.azimuth != azimuth_ || scene_.elevation != elevation_);
+  if (scene_.three) azimuth_ = scene_.azimuth, elevation_ = scene_.elevation;
+  if (first || fit)
+    resetCamera();
+  else if (turn)
+    aimCamera();
   update();
 }
 
 void VtkView::rebuild() {
-  std::vector<std::vector<Vec2>> polys;
-  std::vector<Rgb> colours;
-  for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
-  // 3D: every point at its height towards the viewer, the nearest face just below the 2D
-  // overlays (at heights 0.01-0.025), outlines and contact bars a hair in front of their faces.
-  double top = -1e300, bottom = 1e300;
-  for (const auto& p : scene_.polygons)
-    for (double d : p.depth) top = std::max(top, d), bottom = std::min(bottom, d);
-  if (!(top >= bottom)) top = bottom = 0.0;  // no 3D faces
-  const double lift = 1e-4 * std::max({top - bottom, (scene_.hi - scene_.lo).norm(), 1e-12});
-  // A height towards the viewer as VTK's z: the nearest face three lifts below zero.
-  const auto z_of = [&](double d) { return d - top - 3 * lift; };
+  // Lit by the camera's headlight in 3D (ambient 0.6, diffuse 0.4: the figures' shading),
+  // flat colours in 2D.
+  blocks_actor_->GetProperty()->SetLighting(scene_.three);
   if (scene_.three) {
-    std::vector<std::vector<double>> face_z, edge_z;
-    std::vector<std::vector<Vec2>> outlined;
-    std::vector<Rgb> outline_colours;
-    for (const auto& p : scene_.polygons) {
-      face_z.emplace_back();
-      for (double d : p.depth) face_z.back().push_back(z_of(d));
-      if (!p.outline) continue;
-      outlined.push_back(p.points), outline_colours.push_back(p.colour);
-      edge_z.push_back(face_z.back());
-      for (double& z : edge_z.back()) z += lift;
-    }
-    fill_polygons(blocks_, polys, colours, 0.0, &face_z);
-    fill_polygons(edges_, outlined, outline_colours, 0.0, &edge_z);
+    rebuild3();
   } else {
-    fill_polygons(blocks_, polys, colours, 0.0);
+    std::vector<std::vector<Vec2>> polys;
+    std::vector<Rgb> colours;
+    for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
+    fill_polygons(blocks_, at_height(polys, 0.0), colours);
     // Block outlines above the zones, which sit above the block fills.
-    fill_polygons(edges_, polys, colours, 0.006);
+    fill_polygons(edges_, at_height(polys, 0.006), colours);
+    std::vector<std::array<Vec2, 2>> outline = highlight_segments_;
+    for (const auto& p : scene_.polygons)
+      if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
+          highlight_blocks_.end())
+        for (size_t k = 0; k < p.points.size(); ++k)
+          outline.push_back({p.points[k], p.points[(k + 1) % p.points.size()]});
+    fill_segments(highlight_, outline);
+    polys.clear(), colours.clear();
+    for (const auto& p : scene_.zones) polys.push_back(p.points), colours.push_back(p.colour);
+    fill_polygons(zones_, at_height(polys, 0.003), colours);
+    polys.clear(), colours.clear();
+    for (const auto& b : scene_.bars)
+      polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),
+          colours.push_back(b.colour);
+    fill_polygons(bars_, at_height(polys, 0.01), colours);
+    // Arrows as line cells: shaft and two head strokes.
+    std::vector<std::array<Vec3, 2>> strokes;
+    const auto line = [&](Vec2 a, Vec2 b) {
+      strokes.push_back({Vec3(a.x(), a.y(), 0.02), Vec3(b.x(), b.y(), 0.02)});
+    };
+    for (const auto& a : scene_.arrows) {
+      const Vec2 d = a.head - a.tail;
+      const Vec2 n(-d.y(), d.x());
+      line(a.tail, a.head);
+      line(a.head, a.head - 0.25 * d + 0.12 * n);
+      line(a.head, a.head - 0.25 * d - 0.12 * n);
+    }
+    fill_lines(arrows_, strokes);
   }
-  std::vector<std::array<Vec2, 2>> outline = highlight_segments_;
-  for (const auto& p : scene_.polygons)
-    if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
-        highlight_blocks_.end())
-      for (size_t k = 0; k < p.points.size(); ++k)
-        outline.push_back({p.points[k], p.points[(k + 1) % p.points.size()]});
-  fill_lines(highlight_, outline);
-  polys.clear(), colours.clear();
-  for (const auto& p : scene_.zones) polys.push_back(p.points), colours.push_back(p.colour);
-  fill_polygons(zones_, polys, colours, 0.003);
-  polys.clear(), colours.clear();
-  for (const auto& b : scene_.bars)
-    polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),
-        colours.push_back(b.colour);
-  if (scene_.three) {
-    std::vector<std::vector<double>> bar_heights;
-    for (const auto& b : scene_.bars) bar_heights.emplace_back(4, z_of(b.depth) + 2 * lift);
-    fill_polygons(bars_, polys, colours, 0.0, &bar_heights);
-  } else {
-    fill_polygons(bars_, polys, colours, 0.01);
-  }
-  // Arrows as line cells: shaft and two head strokes.
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> lines;
-  auto line = [&](Vec2 a, Vec2 b) {
-    const vtkIdType ids[2] = {pts->InsertNextPoint(a.x(), a.y(), 0.02),
-                              pts->InsertNextPoint(b.x(), b.y(), 0.02)};
-    lines->InsertNextCell(2, ids);
-  };
-  for (const auto& a : scene_.arrows) {
-    const Vec2 d = a.head - a.tail;
-    const Vec2 n(-d.y(), d.x());
-    line(a.tail, a.head);
-    line(a.head, a.head - 0.25 * d + 0.12 * n);
-    line(a.head, a.head - 0.25 * d - 0.12 * n);
-  }
-  arrows_->Initialize();
-  arrows_->SetPoints(pts);
-  arrows_->SetLines(lines);
   // Legends: the blocks' (or zones') colours, and the contacts' when they are continuous too
   // (zones by stress, contacts by force: each its own scale), one above the other.
   const bool both = scene_.contacts_legend.continuous && !scene_.contacts_legend.title.empty() &&
@@ -385,7 +380,9 @@ void VtkView::rebuild() {
 }
 
 void VtkView::resetCamera() {
+  if (scene_.three) return resetCamera3();
   vtkCamera* cam = renderer_->GetActiveCamera();
+  cam->ParallelProjectionOn();
   const Vec2 mid = 0.5 * (scene_.lo + scene_.hi), span = scene_.hi - scene_.lo;
   cam->SetFocalPoint(mid.x(), mid.y(), 0);
   cam->SetPosition(mid.x(), mid.y(), 10 * std::max(span.x(), span.y()) + 1);
@@ -418,6 +415,7 @@ QPoint VtkView::pixelOf(Vec2 p) {
 }
 
 void VtkView::visibleWindow(Vec2& lo, Vec2& hi) {
+  if (scene_.three) return visibleWindow3(lo, hi);
   // The corners of the model's viewport.
   const QPoint low(static_cast<int>(kModelViewport[0] * width()),
                    static_cast<int>((1 - kModelViewport[1]) * height())),
@@ -437,7 +435,7 @@ void VtkView::setDrawing(DrawMode mode, double grid) {
 }
 
 void VtkView::setPreview(const std::vector<std::array<Vec2, 2>>& segments) {
-  fill_lines(preview_, segments);
+  fill_segments(preview_, segments);
   preview_count_ = segments.size();
   update();
 }
@@ -534,14 +532,28 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
   }
   const QPoint d = e->pos() - last_;
   if ((e->pos() - press_).manhattanLength() > 3) dragged_ = true;
+  if (scene_.three) {
+    // 3D: a right drag turns the camera about the vertical and tilts it (the window learns the
+    // new view on release), the other buttons pan.
+    if (button_ == Qt::RightButton) {
+      azimuth_ = std::fmod(azimuth_ - 0.4 * d.x() + 360.0, 360.0);
+      elevation_ = std::clamp(elevation_ + 0.4 * d.y(), -89.0, 89.0);
+      aimCamera();
+    } else {
+      pan3(last_, e->pos());
+    }
+    last_ = e->pos();
+    update();
+    return;
+  }
   vtkCamera* cam = renderer_->GetActiveCamera();
   if (button_ == Qt::LeftButton && drawing_.mode() == DrawMode::kSelect) {
     // The selection box, corner to corner.
     const Vec2 a = modelPoint(press_), b = modelPoint(e->pos());
-    fill_lines(band_, {{{a, Vec2(b.x(), a.y())}},
-                       {{Vec2(b.x(), a.y()), b}},
-                       {{b, Vec2(a.x(), b.y())}},
-                       {{Vec2(a.x(), b.y()), a}}});
+    fill_segments(band_, {{{a, Vec2(b.x(), a.y())}},
+                          {{Vec2(b.x(), a.y()), b}},
+                          {{b, Vec2(a.x(), b.y())}},
+                          {{Vec2(a.x(), b.y()), a}}});
   } else if (button_ == Qt::LeftButton || button_ == Qt::MiddleButton) {
     // Pan: move the camera by the model distance the cursor moved.
     const Vec2 a = modelPoint(last_), b = modelPoint(e->pos());
@@ -550,9 +562,6 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
     cam->GetFocalPoint(f), cam->GetPosition(p);
     cam->SetFocalPoint(f[0] + shift.x(), f[1] + shift.y(), f[2]);
     cam->SetPosition(p[0] + shift.x(), p[1] + shift.y(), p[2]);
-  } else if (button_ == Qt::RightButton && scene_.three) {
-    // 3D models: turn the viewpoint (the window rebuilds the picture).
-    emit turned(-0.4 * d.x(), 0.4 * d.y());
   } else if (button_ == Qt::RightButton) {
     cam->Azimuth(-0.4 * d.x());
     cam->Elevation(0.4 * d.y());
@@ -564,9 +573,16 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void VtkView::mouseReleaseEvent(QMouseEvent* e) {
+  if (scene_.three && has_scene_) {
+    const Qt::MouseButton button = button_;
+    button_ = Qt::NoButton;
+    if (button == Qt::RightButton && dragged_) emit turned(azimuth_, elevation_);
+    if (button == Qt::LeftButton && !dragged_) pick3(e->pos());
+    return;
+  }
   if (drawing_.mode() == DrawMode::kSelect && button_ == Qt::LeftButton && dragged_) {
     const Vec2 a = modelPoint(press_), b = modelPoint(e->pos());
-    fill_lines(band_, {});
+    fill_segments(band_, {});
     button_ = Qt::NoButton;
     update();
     emit boxSelected(QPointF(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
@@ -622,6 +638,11 @@ void VtkView::wheelEvent(QWheelEvent* e) {
   // Zoom about the cursor: the model point under it stays put.
   vtkCamera* cam = renderer_->GetActiveCamera();
   const QPoint at = e->position().toPoint();
+  if (scene_.three) {
+    zoom3(at, std::pow(0.85, e->angleDelta().y() / 120.0));
+    update();
+    return;
+  }
   const Vec2 before = modelPoint(at);
   cam->SetParallelScale(cam->GetParallelScale() * std::pow(0.85, e->angleDelta().y() / 120.0));
   const Vec2 shift = before - modelPoint(at);

@@ -239,7 +239,7 @@ void Interpreter::cmd_figure(Args& a) {
   if (a.words.size() != 1)
     fail(
         "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [vectors=on] "
-        "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [title=\"...\"]'");
+        "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [cut=DIP,DIPDIR,X,Y,Z] [title=\"...\"]'");
   FigureRequest r;
   const std::string ext = fs::path(a.words[0]).extension().string();
   if (ext != ".png" && ext != ".svg" && ext != ".pdf")
@@ -276,6 +276,19 @@ void Interpreter::cmd_figure(Args& a) {
     if (!(ae.y() >= -90.0 && ae.y() <= 90.0))
       fail("write view=AZIMUTH,ELEVATION with the elevation in [-90, 90] degrees");
     r.view.azimuth = ae.x(), r.view.elevation = ae.y();
+  }
+  if (take(a, "cut", v)) {
+    if (model_.dim != 3) fail("cut= cuts 3D models open; this model is 2D");
+    const auto parts = split_top_level(v);
+    if (parts.size() != 5)
+      fail(
+          "write cut=DIP,DIPDIR,X,Y,Z (the plane's dip and dip direction in degrees, and a point "
+          "on it)");
+    r.view.cut = true;
+    r.view.cut_dip = num(parts[0]), r.view.cut_dip_direction = num(parts[1]);
+    r.view.cut_point = {num(parts[2]), num(parts[3]), num(parts[4])};
+    if (!(r.view.cut_dip >= 0.0 && r.view.cut_dip <= 90.0))
+      fail("the cut's dip must be between 0 and 90 degrees");
   }
   if (take(a, "title", v)) {
     if (v.size() > 1 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);

@@ -60,6 +60,11 @@ struct ViewOptions {
   // 3D models: where the (parallel) view looks from - azimuth clockwise from north (+y) and
   // elevation above the horizon, in degrees. The window is then in view coordinates.
   double azimuth = 210.0, elevation = 25.0;
+  // 3D models: a cut to look inside - what lies above the plane (on the side its upward normal
+  // points to; for a vertical plane, towards its dip direction) is not drawn.
+  bool cut = false;
+  double cut_dip = 90.0, cut_dip_direction = 0.0;  // degrees, dip direction clockwise from north
+  Eigen::Vector3d cut_point = Eigen::Vector3d::Zero();
 };
 
 // One figure to write: PNG (pixels), SVG or PDF (the same size in points), by the extension.

@@ -52,6 +52,9 @@ class MainWindow : public QMainWindow {
   // Writes the current view as a figure (.png, .svg or .pdf) of the given size.
   void exportFigure(const QString& path, int width, int height);
   void setViewOptions(const ViewOptions& o);
+  // View > Cut plane (3D): a dialog for the plane (dip, dip direction, a point), which cuts the
+  // window's view and the figures exported from it.
+  void cutDialog();
   // Undoes the newest command run in the window (not the opened script's lines), or runs the
   // newest undone one again.
   void undo();

@@ -21,6 +21,7 @@ struct ScenePolygon {
   int block = -1;             // index in the snapshot
   bool outline = true;        // drawn with a dark edge (a 3D zone's surface triangle is not)
   std::vector<double> depth;  // 3D: each point's height towards the viewer, for a depth buffer
+  std::vector<Vec3> world;    // 3D: the points in model coordinates (magnified), for a camera
 };
 
 // A contact drawn as a bar along the joint, its width showing the normal force.
@@ -29,10 +30,13 @@ struct SceneBar {
   Rgb colour;
   int contact = -1;
   double depth = 0;  // 3D: the sub-contact's height towards the viewer
+  Vec3 world[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};  // 3D, for a camera:
+  // a square in the sub-contact's plane
 };
 
 struct SceneArrow {
   Vec2 tail, head;
+  Vec3 tail3 = Vec3::Zero(), head3 = Vec3::Zero();  // 3D: in model coordinates
 };
 
 // A continuous colour bar (range, units) or a list of named colours.
@@ -58,13 +62,18 @@ struct Scene {
   double arrow_scale = 0;                     // drawn length per metre of displacement
   std::vector<uint8_t> deformable_blocks;     // by snapshot block index
   bool three = false;  // a 3D model, drawn in view coordinates (with depths: no hand sorting)
+  // A 3D scene for a camera (the window): every face, turned away or not, in its own colour
+  // (the camera's light shades it), with world points; figures are drawn in view coordinates.
+  bool camera = false;
+  double azimuth = 0, elevation = 0;  // 3D: the view it was built for (degrees)
   bool deformable(int block) const {
     return block >= 0 && static_cast<size_t>(block) < deformable_blocks.size() &&
            deformable_blocks[static_cast<size_t>(block)];
   }
 };
 
-Scene build_scene(const Snapshot& s, const ViewOptions& o);
+// `camera`: a 3D model for the window's camera (Scene::camera); figures leave it off.
+Scene build_scene(const Snapshot& s, const ViewOptions& o, bool camera = false);
 
 // The block value a colour option shows, and its legend title with units.
 double block_value(const SnapshotBlock& b, ColourBy c);

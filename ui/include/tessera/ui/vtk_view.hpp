@@ -2,9 +2,11 @@
 //
 // Debian's VTK Qt module is built for Qt5, so VTK is embedded by hand: a
 // vtkGenericOpenGLRenderWindow that draws into the widget's context (the recipe in
-// shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the view (of a 3D
-// model: the window turns the viewpoint and redraws the projected scene), a click picks the
-// block or contact under the cursor. With a drawing tool on, clicks
+// shared/DESIGN.md). Mouse: left drag pans, wheel zooms, right drag turns the view (a 3D model
+// about the vertical, north kept in the triad), a click picks the block or contact under the
+// cursor (3D: VTK's cell picker on the faces and sub-contacts). 3D models are drawn in model
+// coordinates through a VTK camera (parallel or perspective), lit by a headlight. With a drawing
+// tool on, clicks
 // place snapped points (a rubber band shows the shape), a double click or Enter finishes the
 // shape, Escape or a right click drops it. With the select tool, a left drag draws a box (the
 // middle button pans in every mode).
@@ -21,6 +23,8 @@
 #include "tessera/ui/scene.hpp"
 
 class vtkActor;
+class vtkAxesActor;
+class vtkCellPicker;
 class vtkGenericOpenGLRenderWindow;
 class vtkAxisActor2D;
 class vtkPolyData;
@@ -47,7 +51,8 @@ class VtkView : public QOpenGLWidget {
   Vec2 modelPoint(const QPoint& pixel);
   // The widget pixel a model point is drawn at (2D views).
   QPoint pixelOf(Vec2 p);
-  // The model window the camera shows now, for figures of the current view.
+  // The model window the camera shows now, for figures of the current view (3D: in the view
+  // coordinates of the figures' projection).
   void visibleWindow(Vec2& lo, Vec2& hi);
   // Turns a drawing tool on (kNone: off), snapping to a grid of this spacing (0: none) and to
   // block vertices within 8 pixels.
@@ -63,6 +68,15 @@ class VtkView : public QOpenGLWidget {
   // The values the axes are labelled at, as last drawn (2D views).
   const std::vector<double>& xTicks() const { return x_ticks_; }
   const std::vector<double>& yTicks() const { return y_ticks_; }
+  // 3D: perspective or parallel projection (parallel by default).
+  void setPerspective(bool on);
+  bool perspective() const;
+  // 3D: block faces drawn translucent, so that the sub-contacts inside show.
+  void setSeeThrough(bool on);
+  bool seeThrough() const;
+  // 3D: where the camera looks from now (degrees; the scene's view until the user turns it).
+  double azimuth() const { return azimuth_; }
+  double elevation() const { return elevation_; }
   // Blocks (scene indices) and segments outlined as selected.
   void setHighlight(const std::vector<int>& blocks,
                     const std::vector<std::array<Vec2, 2>>& segments = {});
@@ -74,7 +88,7 @@ class VtkView : public QOpenGLWidget {
   void drawn(DrawMode mode, const QVector<QPointF>& points);
   // The select tool's box, in model coordinates.
   void boxSelected(QPointF lo, QPointF hi);
-  // A right drag over a 3D model: turn the viewpoint by these angles (degrees).
+  // A right drag over a 3D model ended with the camera looking from here (degrees).
   void turned(double azimuth, double elevation);
   // The select tool clicked within a few pixels of a deformable block's outline edge.
   void edgePicked(int block, QPointF a, QPointF b);
@@ -97,6 +111,19 @@ class VtkView : public QOpenGLWidget {
   // The rubber band: the drawn points and the cursor.
   void showDrawing(const QPoint& cursor);
   void finishDrawing();
+  // 3D (vtk_view3d.cpp): the scene's actors from world points; the camera aimed from azimuth_
+  // and elevation_ at its focal point; fitted to the scene; panned and zoomed by pixels; the
+  // triad turned with the camera; the block face or sub-contact under a pixel.
+  void rebuild3();
+  void aimCamera();
+  void resetCamera3();
+  void pan3(QPoint from, QPoint to);
+  void zoom3(QPoint at, double factor);
+  void placeTriad();
+  void pick3(QPoint at);
+  void visibleWindow3(Vec2& lo, Vec2& hi);
+  // Model metres per pixel on the focal plane.
+  double worldPerPixel();
 
   vtkNew<vtkRenderer> renderer_;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
@@ -113,6 +140,11 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkAxisActor2D> x_axis_, y_axis_;
   std::vector<double> x_ticks_, y_ticks_;
   vtkNew<vtkTextActor> title_, caption_;
+  vtkNew<vtkRenderer> triad_;  // the axes triad (east, north, up), turned with the camera
+  vtkNew<vtkAxesActor> triad_axes_;
+  vtkNew<vtkCellPicker> picker_;
+  std::vector<int> face_block_;  // 3D: the block of each face drawn
+  double azimuth_ = 210, elevation_ = 25;
   Scene scene_;
   bool has_scene_ = false;
   QPoint press_, last_;

@@ -1,0 +1,47 @@
+#include "vtk_polydata.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+namespace tessera::ui {
+
+void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments) {
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  for (const auto& s : segments) {
+    const vtkIdType ids[2] = {pts->InsertNextPoint(s[0].data()), pts->InsertNextPoint(s[1].data())};
+    lines->InsertNextCell(2, ids);
+  }
+  pd->Initialize();
+  pd->SetPoints(pts);
+  pd->SetLines(lines);
+}
+
+void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
+                   const std::vector<Rgb>& colours) {
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetName("colour");
+  vtkNew<vtkIntArray> index;
+  index->SetName("index");
+  for (size_t i = 0; i < polys.size(); ++i) {
+    cells->InsertNextCell(static_cast<int>(polys[i].size()));
+    for (const Vec3& p : polys[i]) cells->InsertCellPoint(points->InsertNextPoint(p.data()));
+    const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
+    rgb->InsertNextTypedTuple(c);
+    index->InsertNextValue(static_cast<int>(i));
+  }
+  pd->Initialize();
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  pd->GetCellData()->SetScalars(rgb);
+  pd->GetCellData()->AddArray(index);
+}
+
+}  // namespace tessera::ui
