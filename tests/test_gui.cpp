@@ -8,12 +8,14 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPointer>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 #include <thread>
 
 #include "tessera/script/script.hpp"
@@ -786,6 +788,91 @@ class TestGui : public QObject {
   }
 
   // Building through dialogs and the selection: a joint set typed into its dialog (previewed
+  // A cut shows the section on its plane: the zones it crosses (a zoned block coloured by
+  // stress) and a cap across a rigid block, each covering the block's cross-section (1 m² here),
+  // and nothing above the plane.
+  void cutSectionsCoverTheCrossSection() {
+    const QString path = write_script(dir_, "sections.tess",
+                                      "dimension 3\nmaterial define rock density=2500 E=1e9 "
+                                      "nu=0.25\nblock box 0,0,0 1,1,2 material=rock group=soft\n"
+                                      "block box 2,0,0 3,1,2 material=rock group=hard\n"
+                                      "zone generate edge=0.3 group=soft\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    ViewOptions o;
+    o.colour = ColourBy::kSzz;
+    o.cut = true, o.cut_dip = 0, o.cut_dip_direction = 0;
+    o.cut_point = Vec3(0, 0, 1.0 / 3.0);
+    for (const bool camera : {false, true}) {
+      const Scene scene = build_scene(*w.snapshot(), o, camera);
+      double area[2] = {0, 0};
+      double top = -1;
+      for (const ScenePolygon& p : scene.polygons) {
+        if (!camera) continue;
+        bool on_plane = true;
+        for (const Vec3& v : p.world) {
+          top = std::max(top, v.z());
+          on_plane = on_plane && std::abs(v.z() - 1.0 / 3.0) < 1e-9;
+        }
+        if (!on_plane || p.block < 0 || p.block > 1) continue;
+        Vec3 n = Vec3::Zero();
+        for (size_t k = 0; k < p.world.size(); ++k)
+          n += p.world[k].cross(p.world[(k + 1) % p.world.size()]);
+        area[p.block] += 0.5 * std::abs(n.z());
+      }
+      if (!camera) {
+        QVERIFY(scene.caption.find("cut by the plane 0/000") != std::string::npos);
+        continue;
+      }
+      qInfo("sections: zoned block %.9f m², rigid block %.9f m²; highest point %.9f", area[0],
+            area[1], top);
+      QVERIFY(std::abs(area[0] - 1.0) < 1e-9);
+      QVERIFY(std::abs(area[1] - 1.0) < 1e-9);
+      QVERIFY(top <= 1.0 / 3.0 + 1e-12);
+    }
+  }
+
+  // A dialog whose command fails stays open with its fields and shows the error; corrected, it
+  // runs and closes. Fields that name things offer what exists.
+  void dialogKeepsItsFieldsOnError() {
+    const QString path = write_script(dir_, "dialog_error.tess",
+                                      "round 0.01\nmaterial define rock density=2600\n"
+                                      "block 0,0 1,0 1,1 0,1 material=rock group=stone\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    const qsizetype journal = w.journal().size();
+    QPointer<CommandDialog> d = w.openDialog("material");
+    QVERIFY(d);
+    d->setValue("#name", "soft");
+    d->setValue("density", "-5");
+    QSignalSpy finished(&w, &MainWindow::commandFinished);
+    d->accept();
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.takeFirst().at(0).toBool(), false);
+    QVERIFY(d && d->isVisible());
+    qInfo("dialog error: %s", qPrintable(d->error()));
+    QVERIFY(d->error().contains("density"));
+    QCOMPARE(d->value("density"), QString("-5"));
+    QCOMPARE(w.journal().size(), journal);
+    QVERIFY(!w.errorBox() || !w.errorBox()->isVisible());  // shown in the dialog instead
+    d->setValue("density", "2000");
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QTRY_VERIFY(d.isNull() || !d->isVisible());
+    QCOMPARE(w.journal().last(), QString("material define soft density=2000"));
+    // The assignment dialog offers the materials and groups that exist.
+    QPointer<CommandDialog> assign = w.openDialog("assign");
+    QVERIFY(assign->choices("material").contains("rock"));
+    QVERIFY(assign->choices("material").contains("soft"));
+    QVERIFY(assign->findChild<QToolButton*>("material_choices"));
+    // Nothing selected: said in the dialog, which stays open.
+    assign->setValue("material", "soft");
+    assign->accept();
+    QVERIFY(assign->isVisible());
+    QVERIFY(assign->error().contains("Select blocks"));
+    assign->reject();
+  }
+
   // before the cut), a box dragged over two blocks, a group, material and joint properties
   // assigned to them; each step a command; undone; the saved script rebuilds the same model.
   void buildsThroughDialogsAndSelection() {

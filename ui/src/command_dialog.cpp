@@ -7,6 +7,9 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
+#include <QPushButton>
+#include <QToolButton>
 
 namespace tessera::ui {
 
@@ -31,16 +34,75 @@ CommandDialog::CommandDialog(const QString& title, const QString& head,
       connect(edit, &QLineEdit::textChanged, this, &CommandDialog::changed);
       auto* row = new QHBoxLayout;
       row->addWidget(edit);
+      if (!f.choices.isEmpty()) {
+        // A list of what exists, filled when the menu opens (setChoices).
+        auto* pick = new QToolButton(this);
+        pick->setObjectName(f.key + "_choices");
+        pick->setText("▾");
+        pick->setToolTip("existing " + f.choices);
+        pick->setPopupMode(QToolButton::InstantPopup);
+        auto* menu = new QMenu(pick);
+        const size_t i = edits_.size();
+        connect(menu, &QMenu::aboutToShow, this, [this, menu, edit, i] {
+          menu->clear();
+          if (names_[i].isEmpty()) menu->addAction("(none yet)")->setEnabled(false);
+          for (const QString& name : names_[i])
+            menu->addAction(name, this, [edit, name] { edit->setText(name); });
+        });
+        pick->setMenu(menu);
+        row->addWidget(pick);
+      }
       if (!f.unit.isEmpty()) row->addWidget(new QLabel(f.unit, this));
       form->addRow(f.label, row);
     }
     edits_.push_back(edit);
     checks_.push_back(check);
+    names_.emplace_back();
   }
+  error_ = new QLabel(this);
+  error_->setObjectName("error");
+  error_->setWordWrap(true);
+  error_->setStyleSheet("color: #b00000");
+  error_->hide();
+  form->addRow(error_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  ok_ = buttons->button(QDialogButtonBox::Ok);
+  connect(buttons, &QDialogButtonBox::accepted, this, &CommandDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   form->addRow(buttons);
+}
+
+void CommandDialog::accept() {
+  error_->hide();
+  ok_->setEnabled(false);  // until the command has run
+  emit submitted();
+}
+
+void CommandDialog::showError(const QString& error) {
+  error_->setText(error +
+                  "\nThe model is as it was before this command: correct the fields and press OK "
+                  "again.");
+  error_->show();
+  ok_->setEnabled(true);
+}
+
+QString CommandDialog::error() const {
+  return error_->isHidden() ? QString() : error_->text();
+}
+
+void CommandDialog::finish() {
+  QDialog::accept();
+}
+
+void CommandDialog::setChoices(const QString& kind, const QStringList& names) {
+  for (size_t i = 0; i < fields_.size(); ++i)
+    if (fields_[i].choices == kind) names_[i] = names;
+}
+
+QStringList CommandDialog::choices(const QString& key) const {
+  for (size_t i = 0; i < fields_.size(); ++i)
+    if (fields_[i].key == key) return names_[i];
+  return {};
 }
 
 QString CommandDialog::command() const {

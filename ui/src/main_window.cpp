@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/figure_writer.hpp"
 #include "tessera/ui/history_charts.hpp"
@@ -350,7 +351,17 @@ void MainWindow::onFinished(bool ok, const QString& error) {
       journal_[i] = "; not run: " + journal_[i];
   }
   frame();
-  if (!ok) {
+  // A dialog's command: it closes once its commands have run, or keeps its fields and shows
+  // the error.
+  const bool in_dialog = !waiting_dialog_.isNull();
+  if (in_dialog && !ok) waiting_dialog_->showError(error);
+  if (in_dialog && (!ok || pending_.isEmpty())) {
+    if (ok) waiting_dialog_->finish();
+    waiting_dialog_.clear();
+  }
+  if (!ok && in_dialog) {
+    statusBar()->showMessage("error: the model is as it was before the failing command");
+  } else if (!ok) {
     statusBar()->showMessage("error: the model is as it was before the failing command");
     if (error_box_) error_box_->deleteLater();
     error_box_ = new QMessageBox(QMessageBox::Warning, "Tessera", error, QMessageBox::Ok, this);

@@ -35,7 +35,8 @@ DialogSpec spec(const QString& name) {
              {"density", "Density", "kg/m³", "2600", ""},
              {"E", "Young's modulus", "Pa", "", "deformable blocks only"},
              {"nu", "Poisson's ratio", "", "", ""},
-             {"model", "Zone model", "", "", "elastic, mohr-coulomb, drucker-prager or null"},
+             {"model", "Zone model", "", "", "elastic, mohr-coulomb, drucker-prager or null",
+              "zone models"},
              {"friction", "Friction angle", "deg", "", ""},
              {"cohesion", "Cohesion", "Pa", "", ""},
              {"tension", "Tensile strength", "Pa", "", ""},
@@ -104,7 +105,7 @@ DialogSpec spec(const QString& name) {
              {"bricks", "Bricks per course", "", "8", ""},
              {"origin", "Bottom left", "x,y m", "0,0", ""},
              {"group", "Group", "", "wall", ""},
-             {"material", "Material", "", "", ""}}};
+             {"material", "Material", "", "", "", "materials"}}};
   if (name == "arch")
     return {"Arch",
             "arch",
@@ -115,7 +116,7 @@ DialogSpec spec(const QString& name) {
              {"half_angle", "Half angle", "deg", "90", "90: semicircular"},
              {"abutment", "Abutment height", "m", "", ""},
              {"group", "Group", "", "arch", ""},
-             {"material", "Material", "", "", ""}}};
+             {"material", "Material", "", "", "", "materials"}}};
   if (name == "zones")
     return {"Zones (deformable blocks)",
             "zone generate",
@@ -132,7 +133,7 @@ DialogSpec spec(const QString& name) {
             {{"fix", "Fix", "x, y or xy", "", ""},
              {"stress", "Applied stress", "SXX,SYY,SXY Pa", "", "tension positive"},
              {"pressure", "Pressure", "Pa", "", ""},
-             {"joints", "Along joints named", "", "", "e.g. the opening's name"}},
+             {"joints", "Along joints named", "", "", "e.g. the opening's name", "joint names"}},
             true};
   if (name == "insitu")
     return {"In-situ stress",
@@ -155,12 +156,12 @@ DialogSpec spec(const QString& name) {
              {"#value", "Alpha or ratio", "", "",
               "local: alpha (default 0.8); global: the power ratio removed (0.5)"}}};
   if (name == "assign")
-    return {
-        "Assign to the selection",
-        "",
-        {{"group", "Group", "", "", "puts the selected blocks into this group"},
-         {"material", "Material", "", "", "gives them this material"},
-         {"joint", "Joint properties", "", "", "between the selected blocks (needs the group)"}}};
+    return {"Assign to the selection",
+            "",
+            {{"group", "Group", "", "", "puts the selected blocks into this group", "groups"},
+             {"material", "Material", "", "", "gives them this material", "materials"},
+             {"joint", "Joint properties", "", "", "between the selected blocks (needs the group)",
+              "joint properties"}}};
   return {};
 }
 }  // namespace
@@ -273,10 +274,32 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
     connect(d, &QDialog::finished, this, [this] { view_->setPreview({}); });
     preview(name, *d);
   }
-  connect(d, &QDialog::accepted, this, [this, d, name] {
+  // What exists, for the fields that name things.
+  QStringList groups, materials, joints, names;
+  if (shown_) {
+    for (const auto& g : shown_->groups) groups << QString::fromStdString(g);
+    for (const auto& m : shown_->materials) materials << QString::fromStdString(m.name);
+    for (const auto& j : shown_->joints) joints << QString::fromStdString(j.name);
+    for (const auto& c : shown_->contacts)
+      if (!c.joint_set.empty() && !names.contains(QString::fromStdString(c.joint_set)))
+        names << QString::fromStdString(c.joint_set);
+  }
+  d->setChoices("groups", groups);
+  d->setChoices("materials", materials);
+  d->setChoices("joint properties", joints);
+  d->setChoices("joint names", names);
+  d->setChoices("zone models", {"elastic", "mohr-coulomb", "drucker-prager", "null"});
+  // OK runs the command; the dialog stays open until it has run, and shows its error if it
+  // fails (onFinished).
+  connect(d, &CommandDialog::submitted, this, [this, d, name] {
+    if (busy()) return d->showError("The solver is running: pause or stop it first.");
+    waiting_dialog_ = d;
     if (name != "assign") return runCommand(d->command());
     // Assignments: one command each, in order.
-    if (selection_.isEmpty()) return console_->append("select blocks first", true);
+    if (selection_.isEmpty()) {
+      waiting_dialog_.clear();
+      return d->showError("Select blocks first (the Select tool: a click or a box).");
+    }
     QStringList lines;
     const QString group = d->value("group"), material = d->value("material"),
                   joint = d->value("joint");
@@ -288,6 +311,10 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
       lines << "joint assign " + joint + " groups=" + group + "," + group;
     else if (!joint.isEmpty())
       console_->append("joint properties for a selection need a group to name it", true);
+    if (lines.isEmpty()) {
+      waiting_dialog_.clear();
+      return d->showError("Nothing to assign: give a group, a material or joint properties.");
+    }
     runCommands(lines);
   });
   d->open();

@@ -34,6 +34,33 @@ void clip_below(const ViewOptions& o, const std::vector<Vec3>& in, std::vector<V
   }
 }
 
+// Points on the cut's plane as a polygon turned about its upward normal (convex sections:
+// a tetrahedron's, a convex block's).
+std::vector<Vec3> around_normal(const ViewOptions& o, std::vector<Vec3> pts) {
+  if (pts.size() < 3) return {};
+  const Vec3 n = cut_normal(o), t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  Vec3 mid = Vec3::Zero();
+  for (const Vec3& p : pts) mid += p;
+  mid /= static_cast<double>(pts.size());
+  std::sort(pts.begin(), pts.end(), [&](const Vec3& a, const Vec3& b) {
+    return std::atan2((a - mid).dot(t2), (a - mid).dot(t1)) <
+           std::atan2((b - mid).dot(t2), (b - mid).dot(t1));
+  });
+  // A crossing found from both faces of an edge, once.
+  double size = 0;
+  for (const Vec3& p : pts) size = std::max(size, (p - mid).norm());
+  std::vector<Vec3> out;
+  for (const Vec3& p : pts)
+    if (out.empty() || (p - out.back()).norm() > 1e-9 * size) out.push_back(p);
+  while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-9 * size) out.pop_back();
+  return out.size() >= 3 ? out : std::vector<Vec3>{};
+}
+
+// Where the segment a-b crosses the cut, if it does (signed distances da, db).
+void add_crossing(const Vec3& a, const Vec3& b, double da, double db, std::vector<Vec3>& out) {
+  if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
+}
+
 Vec3 displacement(const SnapshotBlock& b) {
   return {b.x - b.x_ref, b.y - b.y_ref, b.z - b.z_ref};
 }
@@ -90,13 +117,16 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   };
   // A polygon of world points if it faces the viewer.
   std::vector<Vec3> below;
-  const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline) {
+  // A polygon (clipped by the cut unless it is a section lying on it).
+  const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline,
+                        bool section = false) {
     Vec3 n = Vec3::Zero();
     for (size_t k = 0; k < face.size(); ++k) n += face[k].cross(face[(k + 1) % face.size()]);
     const double facing = n.normalized().dot(view.eye);
     if (!(facing > 1e-9) && !out.camera && !o.cut) return;
-    if (o.cut) clip_below(o, face, below);
-    const std::vector<Vec3>& pts = o.cut ? below : face;
+    if (face.size() < 3) return;
+    if (o.cut && !section) clip_below(o, face, below);
+    const std::vector<Vec3>& pts = o.cut && !section ? below : face;
     if (pts.size() < 3) return;
     ScenePolygon polygon;
     polygon.block = block;
@@ -110,15 +140,16 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   // Faces of deformable blocks drawn by their zones' surface triangles (tris3 come grouped by
   // face, in face order).
   std::vector<uint8_t> by_zones(s.faces3.size(), 0);
+  const auto node = [&](uint32_t k) {
+    return Vec3(s.nodes3_start[k] + o.magnify * (s.nodes3[k] - s.nodes3_start[k]));
+  };
   if (zone_colour) {
     std::vector<Vec3> tri(3);
     for (const Snapshot::Tri3& t : s.tris3) {
       by_zones[t.face] = 1;
       const std::optional<Rgb> colour = zone_colour(s.zones[t.zone]);
       if (!colour) continue;
-      for (int k = 0; k < 3; ++k)
-        tri[static_cast<size_t>(k)] =
-            s.nodes3_start[t.n[k]] + o.magnify * (s.nodes3[t.n[k]] - s.nodes3_start[t.n[k]]);
+      for (int k = 0; k < 3; ++k) tri[static_cast<size_t>(k)] = node(t.n[k]);
       show(tri, s.faces3[t.face].block, *colour, false);
     }
   }
@@ -132,6 +163,43 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     for (uint32_t k = face.begin; k < face.end; ++k) pts.push_back(s.points3[k] + shift);
     show(pts, face.block, colours[static_cast<size_t>(face.block)], true);
   }
+  if (!o.cut) return;
+  // The section on the cut's plane: each zone it crosses in the zone's colour (deformable blocks
+  // drawn by zones), and a cap across each other block (its faces' crossings, in turn about the
+  // plane's normal: blocks are convex pieces).
+  const Vec3 up = cut_normal(o);
+  const auto height = [&](const Vec3& p) { return up.dot(p - o.cut_point); };
+  std::vector<Vec3> section;
+  if (zone_colour && !s.tris3.empty())
+    for (const SnapshotZone& z : s.zones) {
+      if (z.block < 0) continue;
+      Vec3 c[4];
+      double d[4];
+      for (int k = 0; k < 4; ++k) c[k] = node(z.n[k]), d[k] = height(c[k]);
+      section.clear();
+      for (int a = 0; a < 4; ++a) {
+        if (d[a] == 0) section.push_back(c[a]);  // a corner on the plane
+        for (int b = a + 1; b < 4; ++b) add_crossing(c[a], c[b], d[a], d[b], section);
+      }
+      const std::vector<Vec3> cut = around_normal(o, section);
+      const std::optional<Rgb> colour = zone_colour(z);
+      if (!cut.empty() && colour) show(cut, z.block, *colour, false, true);
+    }
+  std::vector<std::vector<Vec3>> caps(s.blocks.size());
+  for (size_t f = 0; f < s.faces3.size(); ++f) {
+    if (by_zones[f]) continue;
+    const Snapshot::Face3& face = s.faces3[f];
+    const Vec3 shift = (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(face.block)]);
+    for (uint32_t k = face.begin; k < face.end; ++k) {
+      const uint32_t next = k + 1 < face.end ? k + 1 : face.begin;
+      const Vec3 a = s.points3[k] + shift, b = s.points3[next] + shift;
+      if (height(a) == 0) caps[static_cast<size_t>(face.block)].push_back(a);
+      add_crossing(a, b, height(a), height(b), caps[static_cast<size_t>(face.block)]);
+    }
+  }
+  for (size_t b = 0; b < caps.size(); ++b)
+    if (const std::vector<Vec3> cap = around_normal(o, caps[b]); !cap.empty())
+      show(cap, static_cast<int>(b), colours[b], true, true);
 }
 
 }  // namespace tessera::ui

@@ -160,6 +160,7 @@ void copy_zones3(const Model& m, Snapshot& s) {
   for (uint32_t z = 0; z < c.zone_count(); ++z) {
     c.for_zone_nodes(z, [&](uint32_t n) { around[fill[n]++] = z; });
     SnapshotZone& o = s.zones[z];
+    for (size_t k = 0; k < 4; ++k) o.n[k] = c.zones[z][k];
     const ZoneStress& st = c.stress[z];
     o.sxx = st.xx, o.syy = st.yy, o.szz = st.zz, o.sxy = st.xy, o.syz = st.yz, o.sxz = st.xz;
     o.state = c.state[z];

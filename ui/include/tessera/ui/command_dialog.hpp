@@ -8,8 +8,10 @@
 #include <vector>
 
 class QFormLayout;
+class QLabel;
 class QLineEdit;
 class QCheckBox;
+class QPushButton;
 
 namespace tessera::ui {
 
@@ -21,6 +23,9 @@ struct CommandField {
   QString unit;   // shown after the field, e.g. "Pa", "deg", "m"
   QString value;  // initial text; an empty field is left out of the command
   QString tip;
+  // What the field names, offered as a list of what exists: "groups", "materials", "joint
+  // properties", "joint names" or "zone models" (empty: a free field).
+  QString choices = {};
 };
 
 class CommandDialog : public QDialog {
@@ -34,16 +39,30 @@ class CommandDialog : public QDialog {
   void setTail(const QString& tail) { tail_ = tail; }
   QString value(const QString& key) const;
   void setValue(const QString& key, const QString& value);
+  // The names a kind of field offers (CommandField::choices).
+  void setChoices(const QString& kind, const QStringList& names);
+  QStringList choices(const QString& key) const;
+  // OK does not close the dialog: it says `submitted`, and the window closes it once the
+  // command has run, or shows the command's error here with the fields as they were.
+  void accept() override;
+  void showError(const QString& error);
+  QString error() const;
+  // Closes the dialog as accepted (the command ran).
+  void finish();
 
  signals:
   // A field changed (for live previews).
   void changed();
+  void submitted();
 
  private:
   QString head_, tail_;
   std::vector<CommandField> fields_;
   std::vector<QLineEdit*> edits_;
   std::vector<QCheckBox*> checks_;
+  std::vector<QStringList> names_;  // per field: the choices offered
+  QLabel* error_ = nullptr;
+  QPushButton* ok_ = nullptr;
 };
 
 }  // namespace tessera::ui

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QThread>
 #include <QTimer>
 #include <deque>
@@ -151,6 +152,8 @@ class MainWindow : public QMainWindow {
   ModelTree* tree_;
   PropertyPanel* properties_;
   QMessageBox* error_box_ = nullptr;
+  // A dialog whose command is running: closed when it succeeds, shown the error if it fails.
+  QPointer<CommandDialog> waiting_dialog_;
   QComboBox *colour_box_, *contacts_box_;
   QCheckBox* vectors_box_;
   QDoubleSpinBox* magnify_box_;

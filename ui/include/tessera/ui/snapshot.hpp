@@ -50,7 +50,7 @@ struct SnapshotContact {
 // In 3D models every zone is kept, for the stress of its surface triangles (tris3); a null
 // (excavated) zone has block -1.
 struct SnapshotZone {
-  uint32_t n[3] = {0, 0, 0};
+  uint32_t n[4] = {0, 0, 0, 0};  // corner nodes: a triangle's three, a tetrahedron's four
   int block = -1;
   double sxx = 0, syy = 0, sxy = 0, szz = 0;
   double syz = 0, sxz = 0;  // 3D
