@@ -727,6 +727,48 @@ class TestGui : public QObject {
     }
   }
 
+  // The Undo entry names the command it undoes, whatever ran it (the console, the Step button,
+  // a stage), and undoing restores what that command changed.
+  void undoNamesWhatItUndoes() {
+    MainWindow w;
+    QVERIFY(open_shown(w, script_));
+    auto* undo = w.findChild<QAction*>("undo");
+    QVERIFY(undo);
+    const uint64_t cycle = w.snapshot()->cycle;
+    w.runCommand("delete group=right");
+    QVERIFY(wait_finished(w));
+    QCOMPARE(undo->text(), QString("&Undo delete group=right"));
+    w.step(50);
+    QVERIFY(wait_finished(w));
+    QCOMPARE(undo->text(), QString("&Undo step 50"));
+    QCOMPARE(w.snapshot()->cycle, cycle + 50);
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->cycle, cycle);  // the step undone, the deletion kept
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
+    QCOMPARE(undo->text(), QString("&Undo delete group=right"));
+    // A stage's lines are commands like any other.
+    PlannedStage stage;
+    stage.name = "settle";
+    stage.commands = QStringList{"gravity 0 -9.81"};
+    stage.ratio = 1e-3, stage.cycles = 30;
+    w.stagePanel()->addStage(stage);
+    QSignalSpy done(&w, &MainWindow::stagesFinished);
+    w.runStages();
+    QVERIFY(done.wait(60000));
+    QVERIFY(undo->text().startsWith("&Undo solve"));
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(undo->text(), QString("&Undo gravity 0 -9.81"));
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(undo->text(), QString("&Undo delete group=right"));
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    QVERIFY(!w.canUndo());
+  }
+
   // A two-stage sequence from the stage list: each stage's commands and solve run in order and
   // its results are kept; a finished stage can be shown again and exported; a failing stage
   // stops the run and is marked.

@@ -21,6 +21,8 @@ void MainWindow::buildEditActions() {
   QMenu* edit = menuBar()->addMenu("&Edit");
   undo_action_ = edit->addAction("&Undo", QKeySequence::Undo, this, &MainWindow::undo);
   redo_action_ = edit->addAction("&Redo", QKeySequence::Redo, this, &MainWindow::redo);
+  undo_action_->setObjectName("undo");
+  redo_action_->setObjectName("redo");
   QToolBar* bar = addToolBar("Draw");
   bar->setObjectName("draw_toolbar");
   auto* tools = new QActionGroup(this);

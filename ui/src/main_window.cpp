@@ -341,6 +341,10 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   }
   redoing_ = false;
   while (undoable_.size() > undo_depth_) undoable_.removeFirst();
+  // The Undo and Redo entries name the lists as they are now (setBusy above named them before
+  // this command joined them; a snapshot arriving later used to put that right, unless the
+  // frame timer had taken it first).
+  updateEditActions();
   // A script that failed part way: the lines after the failing one did not run; they stay in
   // the journal as comments, so saving keeps them without pretending they ran.
   if (!ok && what == "<open>") {
