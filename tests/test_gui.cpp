@@ -1004,6 +1004,21 @@ class TestGui : public QObject {
     QVERIFY(wait_finished(w));
     QVERIFY(w.journal().last().startsWith("boundary stress=0,-1e6,0 x="));
     QVERIFY(w.console()->text().contains("boundary stress on 1 edges"));
+    // The model tree lists it with the other conditions: two loaded nodes, the resultant the
+    // stress times the edge's length (the selection's box around the edge, a hair wider).
+    const QStringList xs = w.selection().section(' ', 0, 0).mid(2).split(',');
+    const double edge = xs[1].toDouble() - xs[0].toDouble();
+    bool listed = false;
+    for (const Entry& e : w.snapshot()->conditions)
+      if (e.name == "applied stress or pressure (zone nodes)") {
+        listed = true;
+        QCOMPARE(e.properties[0].second, std::string("2"));
+        qInfo("%s: %s %s (edge %.4g m)", e.name.c_str(), e.properties[2].first.c_str(),
+              e.properties[2].second.c_str(), edge);
+        const double resultant = std::stod(e.properties[2].second);
+        QVERIFY(std::abs(resultant + 1e6 * edge) < 1e-4 * 1e6 * edge);
+      }
+    QVERIFY(listed);
     const Snapshot& s = *w.snapshot();
     const auto& groups = s.groups;
     int upper = 0;

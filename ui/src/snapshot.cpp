@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "tessera/core/model.hpp"
 #include "tessera/script/script.hpp"
@@ -17,6 +18,41 @@ std::string number(double v) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
+}
+
+
+// Zone nodes held or loaded (`boundary`): how many along each axis, at which velocities, and
+// the resultant of the applied loads.
+template <class C>
+void add_node_conditions(const C& c, Snapshot& s) {
+  constexpr int D = static_cast<int>(std::tuple_size_v<typename C::Zone>) - 1;
+  const char* axis[3] = {"x", "y", "z"};
+  for (int k = 0; k < D; ++k) {
+    size_t held = 0;
+    double vmin = 0, vmax = 0;
+    for (size_t n = 0; n < c.node_count(); ++n)
+      if (c.fixity[n] & node_fix_bit(k)) {
+        const double v = c.fixed_vel[n][k];
+        vmin = held ? std::min(vmin, v) : v, vmax = held ? std::max(vmax, v) : v, ++held;
+      }
+    if (!held) continue;
+    const bool moving = vmin != 0 || vmax != 0;
+    s.conditions.push_back(
+        {std::string(moving ? "velocity on " : "fixed ") + axis[k] + " (zone nodes)",
+         {{"nodes", std::to_string(held)},
+          {std::string(axis[k]) + " velocity",
+           vmin == vmax ? number(vmin) + " m/s" : number(vmin) + " to " + number(vmax) + " m/s"}}});
+  }
+  size_t loaded = 0;
+  typename C::Vec total = C::Vec::Zero();
+  for (size_t n = 0; n < c.node_count(); ++n)
+    if (c.applied[n].squaredNorm() > 0) ++loaded, total += c.applied[n];
+  if (!loaded) return;
+  Entry e{"applied stress or pressure (zone nodes)", {{"nodes", std::to_string(loaded)}}};
+  for (int k = 0; k < D; ++k)
+    e.properties.push_back({std::string("resultant ") + axis[k],
+                            number(total[k]) + (D == 2 ? " N/m" : " N")});
+  s.conditions.push_back(std::move(e));
 }
 
 void copy_catalogue(const Model& m, Snapshot& s) {
@@ -33,28 +69,44 @@ void copy_catalogue(const Model& m, Snapshot& s) {
                          {"tension", number(j.tension) + " Pa"},
                          {"dilation", number(j.dilation) + "°"}}});
   // Boundary conditions: one entry per kind of condition (what is fixed, at which velocities),
-  // listing the blocks it holds.
+  // listing the blocks it holds (2D and 3D blocks alike).
   const Blocks& B = m.blocks;
+  const Blocks3& B3 = m.blocks3;
   std::map<std::string, std::pair<Entry, std::vector<int>>> kinds;
-  for (size_t b = 0; b < B.size(); ++b) {
-    if (!B.fixity[b]) continue;
+  const auto add_block = [&](int id, const std::vector<std::pair<std::string, double>>& held,
+                             const char* unit_of_last, bool last_is_rotation) {
+    if (held.empty()) return;
     Entry e;
     std::string what;
-    if (B.fixity[b] & kFixX)
-      what += "x ", e.properties.push_back({"x velocity", number(B.fixed_vx[b]) + " m/s"});
-    if (B.fixity[b] & kFixY)
-      what += "y ", e.properties.push_back({"y velocity", number(B.fixed_vy[b]) + " m/s"});
-    if (B.fixity[b] & kFixRot)
-      what += "rotation ",
-          e.properties.push_back({"angular velocity", number(B.fixed_omega[b]) + " rad/s"});
     bool moving = false;
-    for (const auto& [k, v] : e.properties) moving |= v.rfind("0 ", 0) != 0;
+    for (size_t i = 0; i < held.size(); ++i) {
+      const bool rotation = last_is_rotation && i + 1 == held.size();
+      what += held[i].first + " ";
+      e.properties.push_back({rotation ? "angular velocity" : held[i].first + " velocity",
+                              number(held[i].second) + (rotation ? unit_of_last : " m/s")});
+      moving |= held[i].second != 0;
+    }
     e.name = (moving ? "velocity on " : "fixed ") + what.substr(0, what.size() - 1);
     std::string key = e.name;
     for (const auto& [k, v] : e.properties) key += "|" + v;
     auto& slot = kinds[key];
     if (slot.second.empty()) slot.first = std::move(e);
-    slot.second.push_back(B.id[b]);
+    slot.second.push_back(id);
+  };
+  for (size_t b = 0; b < B.size(); ++b) {
+    std::vector<std::pair<std::string, double>> held;
+    if (B.fixity[b] & kFixX) held.push_back({"x", B.fixed_vx[b]});
+    if (B.fixity[b] & kFixY) held.push_back({"y", B.fixed_vy[b]});
+    if (B.fixity[b] & kFixRot) held.push_back({"rotation", B.fixed_omega[b]});
+    add_block(B.id[b], held, " rad/s", B.fixity[b] & kFixRot);
+  }
+  for (size_t b = 0; b < B3.size(); ++b) {
+    std::vector<std::pair<std::string, double>> held;
+    const char* axis[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k)
+      if (B3.fixity[b] & (1 << k)) held.push_back({axis[k], B3.fixed_v[b][k]});
+    if (B3.fixity[b] & kFix3Rot) held.push_back({"rotation", B3.fixed_w[b].norm()});
+    add_block(B3.id[b], held, " rad/s", B3.fixity[b] & kFix3Rot);
   }
   for (auto& [key, kind] : kinds) {
     auto& [e, ids] = kind;
@@ -66,6 +118,8 @@ void copy_catalogue(const Model& m, Snapshot& s) {
                         {{"blocks", std::to_string(ids.size())}, {"ids", list}});
     s.conditions.push_back(std::move(e));
   }
+  add_node_conditions(m.continuum, s);
+  add_node_conditions(m.continuum3, s);
   const Vec3& g3 = m.settings.gravity3;
   if (m.dim == 3 && g3.norm() > 0)
     s.conditions.push_back({"gravity",
