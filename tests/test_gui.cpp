@@ -9,6 +9,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPointer>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QSvgRenderer>
@@ -501,6 +502,13 @@ class TestGui : public QObject {
     qInfo("cut open: %zu pixels of the block behind the wall", shown.size());
     QVERIFY(shown.size() > 500);
     QVERIFY(w.view()->scene().caption.find("cut by the plane 90/180") != std::string::npos);
+    // The long caption wraps to the window: every line fits, nothing is lost.
+    const QString shown_caption = QString::fromStdString(w.view()->captionShown());
+    QVERIFY(shown_caption.contains('\n'));
+    for (const QString& line : shown_caption.split('\n'))
+      QVERIFY2(double(line.size()) <= w.view()->width() / 6.3 + 1, qPrintable(line));
+    QCOMPARE(QString(shown_caption).remove(QRegularExpression("\\s")),
+             QString::fromStdString(w.view()->scene().caption).remove(QRegularExpression("\\s")));
     const QPoint block = shown[shown.size() / 2] / w.view()->devicePixelRatioF();
     QTest::mouseClick(w.view(), Qt::LeftButton, {}, block);
     QCOMPARE(picks.count(), 1);
@@ -738,6 +746,11 @@ class TestGui : public QObject {
     w.runCommand("delete group=right");
     QVERIFY(wait_finished(w));
     QCOMPARE(undo->text(), QString("&Undo delete group=right"));
+    // The legend names the groups left, not the excavated one (colours stay by group).
+    const Legend legend = w.view()->scene().blocks_legend;
+    QCOMPARE(legend.entries.size(), size_t(2));
+    QCOMPARE(legend.entries[1].first, std::string("left"));
+    QCOMPARE(legend.entries[1].second, category(1));
     w.step(50);
     QVERIFY(wait_finished(w));
     QCOMPARE(undo->text(), QString("&Undo step 50"));

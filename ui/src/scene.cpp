@@ -232,11 +232,18 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
       L, o.colour, !categorical, s.blocks,
       [&](const SnapshotBlock& b) { return block_value(b, o.colour); }, 1e-300, lo, hi);
   if (categorical) {
+    // The groups (materials) some block has: an excavated group is not in the picture.
     const bool groups = o.colour == ColourBy::kGroup;
     const size_t n = groups ? s.groups.size() : s.materials.size();
+    std::vector<uint8_t> used(n, 0);
+    for (const SnapshotBlock& b : s.blocks) {
+      const int i = static_cast<int>(block_value(b, o.colour));
+      if (i >= 0 && static_cast<size_t>(i) < n) used[static_cast<size_t>(i)] = 1;
+    }
     for (size_t i = 0; i < n; ++i)
-      L.entries.push_back(
-          {groups ? s.groups[i] : s.materials[i].name, category(static_cast<int>(i))});
+      if (used[i])
+        L.entries.push_back(
+            {groups ? s.groups[i] : s.materials[i].name, category(static_cast<int>(i))});
   }
   std::vector<Rgb> colours;
   for (size_t b = 0; b < s.blocks.size(); ++b) {

@@ -20,7 +20,6 @@ std::string number(double v) {
   return buf;
 }
 
-
 // Zone nodes held or loaded (`boundary`): how many along each axis, at which velocities, and
 // the resultant of the applied loads.
 template <class C>
@@ -50,8 +49,8 @@ void add_node_conditions(const C& c, Snapshot& s) {
   if (!loaded) return;
   Entry e{"applied stress or pressure (zone nodes)", {{"nodes", std::to_string(loaded)}}};
   for (int k = 0; k < D; ++k)
-    e.properties.push_back({std::string("resultant ") + axis[k],
-                            number(total[k]) + (D == 2 ? " N/m" : " N")});
+    e.properties.push_back(
+        {std::string("resultant ") + axis[k], number(total[k]) + (D == 2 ? " N/m" : " N")});
   s.conditions.push_back(std::move(e));
 }
 

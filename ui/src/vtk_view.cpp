@@ -261,6 +261,10 @@ void VtkView::resizeGL(int w, int h) {
   window_->SetSize(static_cast<int>(w * r), static_cast<int>(h * r));
 }
 
+std::string VtkView::captionShown() const {
+  return caption_->GetInput() ? caption_->GetInput() : "";
+}
+
 bool VtkView::contactScaleShown() const {
   return contacts_bar_->GetVisibility() != 0;
 }
@@ -295,6 +299,7 @@ void VtkView::placeAxes() {
 
 void VtkView::paintGL() {
   placeAxes();
+  placeCaption();
   placeTriad();
   window_->SetReadyForRendering(true);
   window_->SetIsCurrent(true);
@@ -375,8 +380,38 @@ void VtkView::rebuild() {
     contacts_bar_->SetHeight(0.38);
   }
   title_->SetInput(scene_.title.c_str());
-  caption_->SetInput(scene_.caption.c_str());
   renderer_->ResetCameraClippingRange();
+}
+
+void VtkView::placeCaption() {
+  // Wrapped to the window's width at the breaks between its items (three spaces), or between
+  // words when one item is too long.
+  const size_t chars = static_cast<size_t>(std::max(20.0, width() / 6.3));
+  std::string out, line;
+  const auto flush = [&] {
+    if (!out.empty()) out += '\n';
+    out += line, line.clear();
+  };
+  const std::string& text = scene_.caption;
+  for (size_t at = 0; at < text.size();) {
+    size_t next = text.find("   ", at);
+    if (next == std::string::npos) next = text.size();
+    std::string item = text.substr(at, next - at);
+    at = std::min(text.size(), next + 3);
+    if (item.empty()) continue;
+    if (!line.empty() && line.size() + 3 + item.size() > chars) flush();
+    while (item.size() > chars) {
+      size_t cut = item.rfind(' ', chars);
+      if (cut == std::string::npos || cut == 0) cut = chars;
+      if (!line.empty()) flush();
+      line = item.substr(0, cut);
+      flush();
+      item = item.substr(std::min(item.size(), cut + 1));
+    }
+    line += (line.empty() ? "" : "   ") + item;
+  }
+  if (!line.empty()) flush();
+  caption_->SetInput(out.c_str());
 }
 
 void VtkView::resetCamera() {

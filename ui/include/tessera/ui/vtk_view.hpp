@@ -65,6 +65,8 @@ class VtkView : public QOpenGLWidget {
   size_t previewSegments() const { return preview_count_; }
   // Whether the contacts have a colour bar of their own (beside the blocks' or zones').
   bool contactScaleShown() const;
+  // The caption as drawn (wrapped to the window).
+  std::string captionShown() const;
   // The values the axes are labelled at, as last drawn (2D views).
   const std::vector<double>& xTicks() const { return x_ticks_; }
   const std::vector<double>& yTicks() const { return y_ticks_; }
@@ -108,6 +110,8 @@ class VtkView : public QOpenGLWidget {
   void rebuild();
   // The axes at round model coordinates along the model viewport's edges, for the camera now.
   void placeAxes();
+  // The caption wrapped to the window's width.
+  void placeCaption();
   // The rubber band: the drawn points and the cursor.
   void showDrawing(const QPoint& cursor);
   void finishDrawing();
