@@ -1,6 +1,7 @@
 // The desktop window under Xvfb: runs on the worker thread while the event loop goes on, pixels
 // of the rendered view, figure export, and a bad command leaving the model as it was.
 #include <QApplication>
+#include <QDialog>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -142,7 +143,30 @@ class TestGui : public QObject {
     QVERIFY(table.open(QIODevice::ReadOnly | QIODevice::Text));
     const QStringList rows = QString::fromUtf8(table.readAll()).trimmed().split('\n');
     QCOMPARE(rows.size(), w.charts()->pointCount(0) + 1);
-    QVERIFY(rows[0].startsWith("cycle,"));
+    QCOMPARE(rows[0], QString("cycle,xvel_2 [m/s]"));
+    // Each y axis names its quantity and unit.
+    QCOMPARE(w.charts()->yTitle(0), QString("xvel [m/s]"));
+    QCOMPARE(w.charts()->yTitle(2), QString("time [s]"));
+    // A chart enlarged in a window of its own, and one history against another (x-y): the
+    // x velocity against time, point for point.
+    QVERIFY(w.charts()->enlarge(0));
+    QCOMPARE(w.charts()->windowCount(), 1);
+    QCOMPARE(w.charts()->windowPoints(0).size(), w.charts()->pointCount(0));
+    QDialog* xy = w.charts()->plotAgainst(0, 2);
+    QVERIFY(xy);
+    QCOMPARE(w.charts()->windowCount(), 2);
+    const QList<QPointF> against = w.charts()->windowPoints(1),
+                         in_cycles = w.charts()->windowPoints(0);
+    QCOMPARE(against.size(), in_cycles.size());
+    const double dt = w.snapshot()->dt;
+    for (qsizetype k = 0; k < against.size(); ++k) {
+      QCOMPARE(against[k].y(), in_cycles[k].y());
+      QVERIFY(std::abs(against[k].x() - in_cycles[k].x() * dt) < 1e-6 * (1 + against[k].x()));
+    }
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      xy->grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/history_xy.png");
+    xy->close();
+    QTRY_COMPARE(w.charts()->windowCount(), 1);
     QVERIFY(w.charts()->exportChart(0, png));
     const QImage chart(png);
     QVERIFY(chart.width() >= 800 && chart.height() >= 500);

@@ -133,7 +133,12 @@ void copy_catalogue(const Model& m, Snapshot& s) {
 
 void copy_histories(const Model& m, Snapshot& s) {
   const Histories& h = m.histories;
-  for (const auto& series : h.series) s.history_labels.push_back(series.label);
+  for (const auto& series : h.series) {
+    s.history_labels.push_back(series.label);
+    const std::string unit = history_quantity_unit(series.quantity, m.dim);
+    s.history_titles.push_back(history_quantity_name(series.quantity) +
+                               (unit.empty() ? "" : " [" + unit + "]"));
+  }
   s.history_values.assign(h.columns(), {});
   const size_t rows = h.rows();
   const size_t stride = rows > Snapshot::kHistoryRows

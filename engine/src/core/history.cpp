@@ -166,6 +166,37 @@ const char* history_quantity_name(HistoryQuantity q) {
   return "?";
 }
 
+std::string history_quantity_unit(HistoryQuantity q, int dim) {
+  switch (q) {
+    case HistoryQuantity::kXDisp:
+    case HistoryQuantity::kYDisp:
+    case HistoryQuantity::kZDisp:
+    case HistoryQuantity::kXPos:
+    case HistoryQuantity::kYPos:
+    case HistoryQuantity::kZPos:
+      return "m";
+    case HistoryQuantity::kXVel:
+    case HistoryQuantity::kYVel:
+    case HistoryQuantity::kZVel:
+      return "m/s";
+    case HistoryQuantity::kRotation:
+      return "rad";
+    case HistoryQuantity::kAngVel:
+      return "rad/s";
+    case HistoryQuantity::kRatio:
+      return "";
+    case HistoryQuantity::kUnbalanced:
+      return dim == 3 ? "N" : "N/m";
+    case HistoryQuantity::kKinetic:
+      return dim == 3 ? "J" : "J/m";
+    case HistoryQuantity::kTime:
+    case HistoryQuantity::kTimestep:
+      return "s";
+    default:
+      return "Pa";  // zone stresses
+  }
+}
+
 std::vector<std::string> history_quantity_names() {
   std::vector<std::string> out;
   for (const auto& n : kNames) out.emplace_back(n.name);

@@ -60,6 +60,8 @@ struct Histories {
 // Quantity by script keyword, true if known; `block_quantity` says whether it needs a block.
 bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity);
 const char* history_quantity_name(HistoryQuantity q);
+// Its unit ("" for the ratio): per metre of thickness in 2D for forces and energies.
+std::string history_quantity_unit(HistoryQuantity q, int dim);
 // Whether a quantity is a zone's stress (sampled in one zone, picked by a point).
 bool is_zone_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.

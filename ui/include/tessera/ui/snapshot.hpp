@@ -84,6 +84,7 @@ struct Snapshot {
   // Histories, thinned to at most kHistoryRows rows spread over the whole run.
   static constexpr size_t kHistoryRows = 2000;
   std::vector<std::string> history_labels;
+  std::vector<std::string> history_titles;  // what each is, with its unit: "ydisp [m]"
   std::vector<double> history_cycles;
   std::vector<std::vector<double>> history_values;  // one vector per series
   // Corners of the box around the blocks.
