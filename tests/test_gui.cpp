@@ -911,6 +911,92 @@ class TestGui : public QObject {
     }
   }
 
+  // A 3D model built through the Model menu's 3D forms: a box, a crack plane and a prism, each
+  // previewed before OK and run as a command; a joint set's planes previewed; blocks chosen by
+  // a box drawn on the screen become a block list that the dialogs act on.
+  void buildsA3dModelThroughDialogs() {
+    const QString path = write_script(dir_, "empty3d.tess",
+                                      "dimension 3\nmaterial define rock density=2500\n"
+                                      "joint define j kn=1e10 ks=1e10 friction=30\n"
+                                      "joint assign j\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    QVERIFY(w.snapshot()->three);
+    QVERIFY(!w.openDialog("voronoi"));  // 2D models only
+    CommandDialog* d = w.openDialog("box");
+    QVERIFY(d);
+    QCOMPARE(w.view()->previewSegments(), size_t(12));
+    d->setValue("#b", "10, 10, 10");
+    d->setValue("material", "rock");
+    QCOMPARE(d->command(), QString("block box 0,0,0 10,10,10 material=rock"));
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(1));
+    QCOMPARE(w.view()->previewSegments(), size_t(0));
+    w.view()->resetCamera();
+    // A crack plane through the box: its outline within the block previewed.
+    d = w.openDialog("crack");
+    QVERIFY(d);
+    d->setValue("origin", "5,5,5");
+    QVERIFY(w.view()->previewSegments() >= 4);
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.journal().last(), QString("crack dip=60 ddir=90 origin=5,5,5"));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(2));
+    // A horizontal joint set 4 m apart from z = 1: three planes (z = 1, 5, 9) across the
+    // blocks, each a rectangle.
+    d = w.openDialog("jset");
+    d->setValue("dip", "0"), d->setValue("ddir", "0"), d->setValue("spacing", "4");
+    d->setValue("origin", "0,0,1");
+    QCOMPARE(w.view()->previewSegments(), size_t(12));
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
+                                       "/jset3d_preview.png");
+    d->reject();
+    // A prism beside it: the base polygon keeps its spaces.
+    d = w.openDialog("prism");
+    d->setValue("#base", "20,0  24,0 24, 3 20,3");
+    d->setValue("material", "rock");
+    QCOMPARE(w.view()->previewSegments(), size_t(12));
+    QCOMPARE(d->command(), QString("block prism 20,0 24,0 24,3 20,3 z=0,2 material=rock"));
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->blocks.size(), size_t(3));
+    // The select tool's box over the whole view takes every block, as a block list.
+    w.view()->resetCamera();
+    QTest::qWait(50);
+    w.setTool(DrawMode::kSelect);
+    const QPoint corner(5, 5), far(w.view()->width() - 5, w.view()->height() - 5);
+    QTest::mousePress(w.view(), Qt::LeftButton, {}, corner);
+    QTest::mouseMove(w.view(), (corner + far) / 2);
+    QTest::mouseMove(w.view(), far);
+    QTest::mouseRelease(w.view(), Qt::LeftButton, {}, far);
+    QCOMPARE(w.selectedBlocks().size(), size_t(3));
+    QCOMPARE(w.selection(), QString("block=1,2,3"));
+    d = w.openDialog("zones");
+    QVERIFY(d->command().startsWith("zone generate edge=1 block=1,2,3"));
+    d->reject();
+    // A click on a face picks its block alone (a click on nothing first clears the selection).
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, QPoint(3, 3));
+    QVERIFY(w.selectedBlocks().empty());
+    QTest::qWait(50);
+    const QImage img = w.view()->grabFramebuffer();
+    std::vector<QPoint> model;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = img.width() * 15 / 100; x < img.width() * 78 / 100; ++x)
+        if (const int l = img.pixelColor(x, y).lightness(); l > 100 && l < 245)
+          model.push_back(QPoint(x, y));  // the blocks' grey faces
+    QVERIFY(model.size() > 1000);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {},
+                      model[model.size() / 2] / img.devicePixelRatioF());
+    QCOMPARE(w.selectedBlocks().size(), size_t(1));
+    QVERIFY(w.selection().startsWith("block="));
+    // The wall previews its bricks on its face and its box.
+    d = w.openDialog("wall");
+    QVERIFY(w.view()->previewSegments() > 12);
+    d->reject();
+  }
+
   // A dialog whose command fails stays open with its fields and shows the error; corrected, it
   // runs and closes. Fields that name things offer what exists.
   void dialogKeepsItsFieldsOnError() {

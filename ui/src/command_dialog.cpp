@@ -9,6 +9,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QToolButton>
 
 namespace tessera::ui {
@@ -112,7 +113,7 @@ QString CommandDialog::command() const {
       if (checks_[i]->isChecked()) out += " " + fields_[i].key.mid(1);
       continue;
     }
-    const QString v = edits_[i]->text().trimmed().remove(' ');
+    const QString v = text(i);
     if (v.isEmpty()) continue;
     out += fields_[i].key.startsWith('#') ? " " + v : " " + fields_[i].key + "=" + v;
   }
@@ -120,10 +121,17 @@ QString CommandDialog::command() const {
   return out;
 }
 
+QString CommandDialog::text(size_t i) const {
+  // A bare value may be a list of points ("0,0 4,0 4,3"): spaces between them kept, none
+  // around commas; a keyword's value has no spaces.
+  const QString raw = edits_[i]->text();
+  return fields_[i].key.startsWith('#') ? raw.simplified().replace(QRegularExpression(" *, *"), ",")
+                                        : raw.trimmed().remove(' ');
+}
+
 QString CommandDialog::value(const QString& key) const {
   for (size_t i = 0; i < fields_.size(); ++i)
-    if (fields_[i].key == key)
-      return edits_[i] ? edits_[i]->text().trimmed() : checks_[i]->isChecked() ? "on" : "";
+    if (fields_[i].key == key) return edits_[i] ? text(i) : checks_[i]->isChecked() ? "on" : "";
   return {};
 }
 

@@ -90,6 +90,13 @@ DialogSpec spec(const QString& name) {
              {"#b", "The opposite corner", "x,y m", "4,3", ""},
              core_name,
              core}};
+  if (name == "region")
+    return {"Region (a box to cut)",
+            "region",
+            {{"#a", "A corner", "x,y m", "0,0", ""},
+             {"#b", "The opposite corner", "x,y m", "20,10", ""},
+             {"group", "Group", "", "", "", "groups"},
+             {"material", "Material", "", "", "", "materials"}}};
   if (name == "voronoi")
     return {"Voronoi cells",
             "voronoi",
@@ -164,11 +171,142 @@ DialogSpec spec(const QString& name) {
               "joint properties"}}};
   return {};
 }
+
+// The 3D forms of the dialogs whose commands differ in 3D (points x,y,z; planes by dip and dip
+// direction); the others as in 2D, and none for commands of 2D models only.
+DialogSpec spec3(const QString& name) {
+  const QString msd = "a mean, or mean,sd for a normal spread";
+  const CommandField group{"group", "Group", "", "", "", "groups"};
+  const CommandField material{"material", "Material", "", "", "", "materials"};
+  const CommandField name_field{"name", "Name", "", "", "the joints' name for properties"};
+  if (name == "box")
+    return {"Block (box)",
+            "block box",
+            {{"#a", "A corner", "x,y,z m", "0,0,0", ""},
+             {"#b", "The opposite corner", "x,y,z m", "10,10,10", ""},
+             group,
+             material}};
+  if (name == "prism")
+    return {"Block (prism)",
+            "block prism",
+            {{"#base", "Base polygon", "x,y x,y ... m", "0,0 4,0 4,3 0,3",
+              "a convex polygon, corners separated by spaces"},
+             {"z", "From z to z", "z0,z1 m", "0,2", ""},
+             group,
+             material}};
+  if (name == "region")
+    return {"Region (a box to cut)",
+            "region",
+            {{"#a", "A corner", "x,y,z m", "0,0,0", ""},
+             {"#b", "The opposite corner", "x,y,z m", "20,20,20", ""},
+             group,
+             material}};
+  if (name == "crack")
+    return {"Crack (a plane)",
+            "crack",
+            {{"dip", "Dip", "deg", "60", "from horizontal"},
+             {"ddir", "Dip direction", "deg", "90", "clockwise from north (+y)"},
+             {"origin", "Through", "x,y,z m", "0,0,0", ""},
+             {"radius", "Disc radius", "m", "", "empty: the whole plane"},
+             name_field},
+            true};
+  if (name == "jset")
+    return {"Joint set",
+            "jset",
+            {{"dip", "Dip", "deg", "60", msd},
+             {"ddir", "Dip direction", "deg", "90", msd},
+             {"spacing", "Spacing", "m", "2", msd},
+             {"origin", "A plane through", "x,y,z m", "", ""},
+             {"persistence", "Persistence", "0 to 1", "", "the share of blocks a plane cuts"},
+             {"seed", "Random seed", "", "", ""},
+             name_field},
+            true};
+  const CommandField core{"group", "Group of the core", "", "tunnel",
+                          "excavate it with delete group=... (with rounds: group_1, ...)"};
+  const CommandField opening{"name", "Name", "", "", "the opening's joints, e.g. for pressure"};
+  if (name == "tunnel" || name == "horseshoe") {
+    DialogSpec s{name == "tunnel" ? "Circular opening" : "Horseshoe opening",
+                 name == "tunnel" ? "tunnel circle" : "tunnel horseshoe",
+                 {{"centre", name == "tunnel" ? "Portal centre" : "Middle of the portal floor",
+                   "x,y,z m", "0,0,0", ""},
+                  {"axis", "Axis", "dx,dy,dz", "0,1,0", "the direction it runs"},
+                  {"length", "Length", "m", "10", ""}}};
+    if (name == "tunnel")
+      s.fields.push_back({"radius", "Radius", "m", "3", ""});
+    else
+      s.fields.insert(s.fields.end(), {{"width", "Width", "m", "6", ""},
+                                       {"height", "Height", "m", "6", "walls plus the roof"}});
+    s.fields.insert(s.fields.end(),
+                    {{"segments", "Segments", "", name == "tunnel" ? "24" : "12", ""},
+                     {"rounds", "Rounds of advance", "", "", "groups G_1 ... G_N"},
+                     opening,
+                     core,
+                     {"!join", "Join the rock around it back into bodies", "", "on", ""}});
+    return s;
+  }
+  if (name == "wall")
+    return {"Running-bond wall",
+            "wall",
+            {{"brick", "Brick", "L,H,W m", "0.6,0.3,0.3", "along x, up z, thick along y"},
+             {"courses", "Courses", "", "6", ""},
+             {"bricks", "Bricks per course", "", "6", ""},
+             {"origin", "Bottom corner", "x,y,z m", "0,0,0", ""},
+             {"group", "Group", "", "wall", ""},
+             material,
+             name_field}};
+  if (name == "zones")
+    return {"Zones (deformable blocks)",
+            "zone generate",
+            {{"edge", "Zone edge", "m", "1", ""},
+             {"fine", "Finer edge near a point", "m", "", ""},
+             {"near", "Near", "x,y,z m", "", ""},
+             {"radius", "Within", "m", "", ""},
+             {"growth", "Growth away from it", "", "", "e.g. 0.3"},
+             {"order", "Zone order", "1 or 2", "", "2: 10-node tetrahedra"}},
+            true};
+  const CommandField x{"x", "Box: x from, to", "m", "", "nodes inside the box"},
+      y{"y", "y from, to", "m", "", ""}, z{"z", "z from, to", "m", "", ""};
+  if (name == "boundary")
+    return {"Boundary condition on nodes",
+            "boundary",
+            {{"fix", "Fix", "x, y, z, xy ... xyz", "", ""},
+             {"velocity", "Velocity", "vx,vy,vz m/s", "", ""},
+             {"stress", "Applied stress", "SXX,SYY,SZZ,SXY,SYZ,SXZ Pa", "", "tension positive"},
+             {"pressure", "Pressure", "Pa", "", ""},
+             {"joints", "Along joints named", "", "", "e.g. the opening's name", "joint names"},
+             x,
+             y,
+             z}};
+  if (name == "insitu")
+    return {"In-situ stress",
+            "insitu",
+            {{"stress", "Stress", "SXX,SYY,SZZ,SXY,SYZ,SXZ Pa", "-10e6,-10e6,-10e6,0,0,0",
+              "tension positive"},
+             {"zgradient", "Gradient with height", "6 values, Pa/m", "", ""},
+             {"z0", "Height of the given stress", "m", "", ""}}};
+  if (name == "gravity")
+    return {"Gravity",
+            "gravity",
+            {{"#gx", "Along x", "m/s²", "0", ""},
+             {"#gy", "Along y", "m/s²", "0", ""},
+             {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
+  if (name == "rectangle" || name == "voronoi" || name == "arch") return {};
+  return spec(name);
+}
+
+// Commands of one dimension only.
+bool three_only(const QString& name) {
+  return name == "box" || name == "prism" || name == "crack";
+}
 }  // namespace
 
 void MainWindow::buildModelMenu() {
   QMenu* model = menuBar()->addMenu("&Model");
-  const std::pair<const char*, const char*> items[] = {{"material", "&Material…"},
+  const std::pair<const char*, const char*> items[] = {{"box", "Block (bo&x, 3D)…"},
+                                                       {"prism", "Block (&prism, 3D)…"},
+                                                       {"region", "R&egion…"},
+                                                       {"crack", "&Crack plane (3D)…"},
+                                                       {"material", "&Material…"},
                                                        {"joint", "&Joint properties…"},
                                                        {"jset", "Joint &set…"},
                                                        {"tunnel", "Circular &opening…"},
@@ -206,6 +344,9 @@ void MainWindow::buildModelMenu() {
       return selectJoint(QString::fromStdString(shown_->contacts[size_t(contact)].joint_set));
     selectBlock(block);
   });
+  connect(view_, &VtkView::blocksBoxed, this, [this](const QVector<int>& blocks) {
+    selectBlocks(std::vector<int>(blocks.begin(), blocks.end()));
+  });
   connect(view_, &VtkView::edgePicked, this, [this](int, QPointF a, QPointF b) {
     selectEdge({a.x(), a.y()}, {b.x(), b.y()});
   });
@@ -236,6 +377,21 @@ void MainWindow::selectBlock(int block) {
   statusBar()->showMessage(selection_.isEmpty() ? "nothing selected" : "selected " + selection_);
 }
 
+void MainWindow::selectBlocks(const std::vector<int>& blocks) {
+  selected_.clear();
+  selection_.clear();
+  QStringList ids;
+  if (shown_)
+    for (int b : blocks)
+      if (b >= 0 && static_cast<size_t>(b) < shown_->blocks.size())
+        selected_.push_back(b), ids << QString::number(shown_->blocks[size_t(b)].id);
+  if (!ids.isEmpty()) selection_ = "block=" + ids.join(',');
+  view_->setHighlight(selected_);
+  statusBar()->showMessage(
+      selection_.isEmpty() ? "nothing selected"
+                           : QString("%1 block(s) selected: %2").arg(ids.size()).arg(selection_));
+}
+
 void MainWindow::selectEdge(Vec2 a, Vec2 b) {
   // The edge as the box around it, a hair wider, so that boundary commands take its two nodes.
   const double pad = 1e-6 * std::max((b - a).norm(), 1e-3);
@@ -261,14 +417,19 @@ void MainWindow::runCommands(const QStringList& lines) {
 }
 
 CommandDialog* MainWindow::openDialog(const QString& name) {
-  const DialogSpec s = spec(name);
-  if (s.title.isEmpty()) return nullptr;
+  const bool three = shown_ && shown_->three;
+  const DialogSpec s = three ? spec3(name) : three_only(name) ? DialogSpec{} : spec(name);
+  if (s.title.isEmpty()) {
+    statusBar()->showMessage(QString("There is no %1 in a %2 model").arg(name, three ? "3D" : "2D"),
+                             5000);
+    return nullptr;
+  }
   auto* d = new CommandDialog(s.title, s.head, s.fields, this);
   d->setAttribute(Qt::WA_DeleteOnClose);
   if (s.on_selection) d->setTail(selection_);
   // Cuts and generators show what they will make before OK.
-  static const QStringList previewed{"jset",    "tunnel", "horseshoe", "rectangle",
-                                     "voronoi", "wall",   "arch"};
+  static const QStringList previewed{"jset", "tunnel", "horseshoe", "rectangle", "voronoi", "wall",
+                                     "arch", "box",    "prism",     "region",    "crack"};
   if (previewed.contains(name)) {
     connect(d, &CommandDialog::changed, this, [this, d, name] { preview(name, *d); });
     connect(d, &QDialog::finished, this, [this] { view_->setPreview({}); });
@@ -343,6 +504,7 @@ void add_cuts(const std::vector<CutLine>& cuts, std::vector<std::array<Vec2, 2>>
 }  // namespace
 
 void MainWindow::preview(const QString& name, const CommandDialog& d) {
+  if (shown_ && shown_->three) return preview3(name, d);
   std::vector<std::array<Vec2, 2>> lines;
   double a = 0, b = 0, x = 0, y = 0;
   // The box of the blocks a cut acts on: the selection's, or the whole model's.
@@ -386,7 +548,7 @@ void MainWindow::preview(const QString& name, const CommandDialog& d) {
         numbers(d.value("height"), h, b) && w > 0 && h > w / 2)
       add_loop(horseshoe_outline({x, y}, w, h, std::clamp(d.value("segments").toInt(), 2, 2000)),
                lines);
-  } else if (name == "rectangle") {
+  } else if (name == "rectangle" || name == "region") {
     double x1 = 0, y1 = 0;
     if (numbers(d.value("#a"), x, y) && numbers(d.value("#b"), x1, y1))
       add_loop({{x, y}, {x1, y}, {x1, y1}, {x, y1}}, lines);

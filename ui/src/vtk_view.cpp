@@ -27,6 +27,7 @@
 
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QRubberBand>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 #include <algorithm>
@@ -570,7 +571,11 @@ void VtkView::mouseMoveEvent(QMouseEvent* e) {
   if (scene_.three) {
     // 3D: a right drag turns the camera about the vertical and tilts it (the window learns the
     // new view on release), the other buttons pan.
-    if (button_ == Qt::RightButton) {
+    if (button_ == Qt::LeftButton && drawing_.mode() == DrawMode::kSelect) {
+      if (!rubber_) rubber_ = new QRubberBand(QRubberBand::Rectangle, this);
+      rubber_->setGeometry(QRect(press_, e->pos()).normalized());
+      rubber_->show();
+    } else if (button_ == Qt::RightButton) {
       azimuth_ = std::fmod(azimuth_ - 0.4 * d.x() + 360.0, 360.0);
       elevation_ = std::clamp(elevation_ + 0.4 * d.y(), -89.0, 89.0);
       aimCamera();
@@ -612,6 +617,10 @@ void VtkView::mouseReleaseEvent(QMouseEvent* e) {
     const Qt::MouseButton button = button_;
     button_ = Qt::NoButton;
     if (button == Qt::RightButton && dragged_) emit turned(azimuth_, elevation_);
+    if (button == Qt::LeftButton && dragged_ && drawing_.mode() == DrawMode::kSelect) {
+      if (rubber_) rubber_->hide();
+      emit blocksBoxed(blocksIn(QRect(press_, e->pos()).normalized()));
+    }
     if (button == Qt::LeftButton && !dragged_) pick3(e->pos());
     return;
   }

@@ -71,6 +71,12 @@ void VtkView::rebuild3() {
   fill_lines(arrows_, strokes);
 }
 
+void VtkView::setPreview3(const std::vector<std::array<Vec3, 2>>& segments) {
+  fill_lines(preview_, segments);
+  preview_count_ = segments.size();
+  update();
+}
+
 double VtkView::worldPerPixel() {
   vtkCamera* cam = renderer_->GetActiveCamera();
   const double h = std::max(1.0, height() * (kModelViewport[3] - kModelViewport[1]));
@@ -180,6 +186,30 @@ void VtkView::pick3(QPoint at) {
       block = face_block_[static_cast<size_t>(i)];
   }
   emit picked(block, contact);
+}
+
+QVector<int> VtkView::blocksIn(const QRect& r) {
+  std::vector<Vec3> sum;
+  std::vector<int> count;
+  for (const auto& p : scene_.polygons) {
+    if (p.block < 0) continue;
+    const auto b = static_cast<size_t>(p.block);
+    if (b >= sum.size()) sum.resize(b + 1, Vec3::Zero()), count.resize(b + 1, 0);
+    for (const Vec3& v : p.world) sum[b] += v, ++count[b];
+  }
+  const double ratio = devicePixelRatioF();
+  QVector<int> inside;
+  for (size_t b = 0; b < sum.size(); ++b) {
+    if (!count[b]) continue;
+    const Vec3 c = sum[b] / count[b];
+    renderer_->SetWorldPoint(c.x(), c.y(), c.z(), 1);
+    renderer_->WorldToDisplay();
+    const double* d = renderer_->GetDisplayPoint();
+    if (r.contains(
+            QPoint(static_cast<int>(d[0] / ratio), static_cast<int>(height() - d[1] / ratio))))
+      inside.append(static_cast<int>(b));
+  }
+  return inside;
 }
 
 void VtkView::visibleWindow3(Vec2& lo, Vec2& hi) {

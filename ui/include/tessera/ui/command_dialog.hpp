@@ -37,6 +37,7 @@ class CommandDialog : public QDialog {
   // The command the form makes now, with `tail` (e.g. a selection) appended.
   QString command() const;
   void setTail(const QString& tail) { tail_ = tail; }
+  // A field's text as it goes into the command.
   QString value(const QString& key) const;
   void setValue(const QString& key, const QString& value);
   // The names a kind of field offers (CommandField::choices).
@@ -56,6 +57,7 @@ class CommandDialog : public QDialog {
   void submitted();
 
  private:
+  QString text(size_t i) const;
   QString head_, tail_;
   std::vector<CommandField> fields_;
   std::vector<QLineEdit*> edits_;

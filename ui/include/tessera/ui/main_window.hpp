@@ -78,6 +78,8 @@ class MainWindow : public QMainWindow {
   const std::vector<int>& selectedBlocks() const { return selected_; }
   void selectBox(Vec2 lo, Vec2 hi);
   void selectBlock(int block);
+  // Blocks by snapshot index (a box drawn over a 3D view), as `block=ID,ID,...`.
+  void selectBlocks(const std::vector<int>& blocks);
   // An outline edge (as the box around it, for boundary commands) or a named joint set.
   void selectEdge(Vec2 a, Vec2 b);
   void selectJoint(const QString& name);
@@ -128,6 +130,7 @@ class MainWindow : public QMainWindow {
   void buildModelMenu();  // model_dialogs.cpp
   // Draws what a cut or generator dialog will make (model_dialogs.cpp).
   void preview(const QString& name, const CommandDialog& d);
+  void preview3(const QString& name, const CommandDialog& d);  // model_previews3.cpp
   void frame();
   void display(std::shared_ptr<const Snapshot> s);
   void redraw(bool fit = false);

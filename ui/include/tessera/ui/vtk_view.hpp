@@ -31,6 +31,7 @@ class vtkPolyData;
 class vtkRenderer;
 class vtkScalarBarActor;
 class vtkTextActor;
+class QRubberBand;
 
 namespace tessera::ui {
 
@@ -62,6 +63,8 @@ class VtkView : public QOpenGLWidget {
   bool finishShape();
   // Lines drawn over the model to preview a cut before it is made (empty: none).
   void setPreview(const std::vector<std::array<Vec2, 2>>& segments);
+  // The same in model coordinates, for 3D models.
+  void setPreview3(const std::vector<std::array<Vec3, 2>>& segments);
   size_t previewSegments() const { return preview_count_; }
   // Whether the contacts have a colour bar of their own (beside the blocks' or zones').
   bool contactScaleShown() const;
@@ -90,6 +93,8 @@ class VtkView : public QOpenGLWidget {
   void drawn(DrawMode mode, const QVector<QPointF>& points);
   // The select tool's box, in model coordinates.
   void boxSelected(QPointF lo, QPointF hi);
+  // 3D: the blocks (scene indices) whose centroids lie in the select tool's box on the screen.
+  void blocksBoxed(const QVector<int>& blocks);
   // A right drag over a 3D model ended with the camera looking from here (degrees).
   void turned(double azimuth, double elevation);
   // The select tool clicked within a few pixels of a deformable block's outline edge.
@@ -125,6 +130,8 @@ class VtkView : public QOpenGLWidget {
   void zoom3(QPoint at, double factor);
   void placeTriad();
   void pick3(QPoint at);
+  // The blocks whose centroids (the mean of their faces' corners) are drawn inside a rectangle.
+  QVector<int> blocksIn(const QRect& r);
   void visibleWindow3(Vec2& lo, Vec2& hi);
   // Model metres per pixel on the focal plane.
   double worldPerPixel();
@@ -147,7 +154,8 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkRenderer> triad_;  // the axes triad (east, north, up), turned with the camera
   vtkNew<vtkAxesActor> triad_axes_;
   vtkNew<vtkCellPicker> picker_;
-  std::vector<int> face_block_;  // 3D: the block of each face drawn
+  std::vector<int> face_block_;    // 3D: the block of each face drawn
+  QRubberBand* rubber_ = nullptr;  // 3D: the select tool's box on the screen
   double azimuth_ = 210, elevation_ = 25;
   Scene scene_;
   bool has_scene_ = false;
