@@ -613,6 +613,14 @@ class TestGui : public QObject {
     const Scene scene = build_scene(*w.snapshot(), o);
     QCOMPARE(scene.zones.size(), w.snapshot()->zones.size());
     QVERIFY(scene.zones.size() > 100);
+    // Each zone a triangle, together the column's 1 x 4 m (squeezed by a hair under gravity).
+    double area = 0;
+    for (const ScenePolygon& z : scene.zones) {
+      QCOMPARE(z.points.size(), size_t(3));
+      const Vec2 a = z.points[1] - z.points[0], b = z.points[2] - z.points[0];
+      area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    }
+    QVERIFY2(std::abs(area - 4.0) < 1e-3, qPrintable(QString::number(area)));
     QCOMPARE(QString::fromStdString(scene.blocks_legend.title), QString("syy [MPa]"));
     QVERIFY(scene.blocks_legend.lo < -0.07 && scene.blocks_legend.hi > -0.01);
     const QImage img = w.view()->grabFramebuffer();
@@ -621,6 +629,15 @@ class TestGui : public QObject {
     QVERIFY2(foot.blue() > foot.red() + 80, qPrintable(foot.name()));
     QVERIFY2(top.red() > top.blue() + 80, qPrintable(top.name()));
     QVERIFY(!w.view()->contactScaleShown());
+    // A click on the column picks the zone there: its stresses, compressive near the foot.
+    QSignalSpy zones(w.view(), &VtkView::zonePicked);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {}, w.view()->pixelOf({0.5, 0.3}));
+    QCOMPARE(zones.count(), 1);
+    const int zone = zones.takeFirst().at(0).toInt();
+    const Properties picked = zone_properties(*w.snapshot(), zone);
+    QCOMPARE(picked[1].second, std::to_string(w.snapshot()->blocks[1].id));
+    QCOMPARE(picked[3].first, std::string("syy"));
+    QVERIFY2(std::stod(picked[3].second) < -0.05, picked[3].second.c_str());  // MPa
     // With the contacts coloured by force too, they get a colour bar of their own.
     o.contacts = ContactShow::kForce;
     w.setViewOptions(o);
@@ -909,6 +926,24 @@ class TestGui : public QObject {
       QVERIFY(std::abs(area[1] - 1.0) < 1e-9);
       QVERIFY(top <= 1.0 / 3.0 + 1e-12);
     }
+    // In the window, a click on the zoned block (coloured by szz; the rigid one grey) picks a
+    // zone of it through VTK's picker.
+    o.cut = false;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const QImage img = w.view()->grabFramebuffer();
+    std::vector<QPoint> zoned;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = img.width() * 15 / 100; x < img.width() * 78 / 100; ++x)
+        if (img.pixelColor(x, y).saturation() > 60) zoned.push_back(QPoint(x, y));
+    QVERIFY(zoned.size() > 500);
+    QSignalSpy zones(w.view(), &VtkView::zonePicked);
+    QTest::mouseClick(w.view(), Qt::LeftButton, {},
+                      zoned[zoned.size() / 2] / img.devicePixelRatioF());
+    QCOMPARE(zones.count(), 1);
+    const auto zone = static_cast<size_t>(zones.takeFirst().at(0).toInt());
+    QCOMPARE(w.snapshot()->zones.at(zone).block, 0);
   }
 
   // A 3D model built through the Model menu's 3D forms: a box, a crack plane and a prism, each

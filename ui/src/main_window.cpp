@@ -88,6 +88,10 @@ MainWindow::MainWindow(QWidget* parent)
       properties_->show(QString("block %1").arg(shown_->blocks[static_cast<size_t>(block)].id),
                         block_properties(*shown_, block));
   });
+  connect(view_, &VtkView::zonePicked, this, [this](int zone) {
+    if (shown_ && static_cast<size_t>(zone) < shown_->zones.size())
+      properties_->show(QString("zone %1").arg(zone + 1), zone_properties(*shown_, zone));
+  });
   connect(tree_, &ModelTree::selected, properties_, &PropertyPanel::show);
   // Frames: at most 15 a second, pulled from the worker, never waiting for it.
   connect(&frame_timer_, &QTimer::timeout, this, &MainWindow::frame);

@@ -2,12 +2,14 @@
 #include "tessera/ui/model_tree.hpp"
 
 #include <QHeaderView>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "tessera/contact2d/blocks.hpp"
 #include "tessera/contact2d/contacts.hpp"
 #include "tessera/contact3d/blocks3.hpp"
+#include "tessera/ui/scene.hpp"
 
 namespace tessera::ui {
 
@@ -172,6 +174,21 @@ Properties contact_properties(const Snapshot& s, int contact) {
                       : c.flags & kSlipping  ? "slipping"
                       : c.flags & kBonded    ? "bonded"
                                              : "elastic";
+  if (s.three)
+    // A sub-contact: its point, the area it stands for, forces in newtons.
+    return {{"blocks", std::to_string(s.blocks[static_cast<size_t>(c.a)].id) + " and " +
+                           std::to_string(s.blocks[static_cast<size_t>(c.b)].id)},
+            {"joint", c.joint},
+            {"state", std::string(state) + (c.flags & kBroken ? " (bond broken)" : "")},
+            {"point",
+             num(c.point3.x(), "") + ", " + num(c.point3.y(), "") + ", " + num(c.point3.z(), "m")},
+            {"normal", num(c.normal3.x(), "") + ", " + num(c.normal3.y(), "") + ", " +
+                           num(c.normal3.z(), "")},
+            {"area", num(4 * c.length * c.length, "m²")},
+            {"gap", num(c.gap, "m")},
+            {"normal force", num(c.fn, "N")},
+            {"shear force", num(c.fs, "N")},
+            {"shear displacement", num(c.shear_disp, "m")}};
   return {{"blocks", std::to_string(s.blocks[static_cast<size_t>(c.a)].id) + " and " +
                          std::to_string(s.blocks[static_cast<size_t>(c.b)].id)},
           {"joint", c.joint},
@@ -183,6 +200,27 @@ Properties contact_properties(const Snapshot& s, int contact) {
           {"normal force", num(c.fn, "N/m")},
           {"shear force", num(c.fs, "N/m")},
           {"shear displacement", num(c.shear_disp, "m")}};
+}
+
+Properties zone_properties(const Snapshot& s, int zone) {
+  const SnapshotZone& z = s.zones.at(static_cast<size_t>(zone));
+  static const char* states[] = {"elastic", "yielding in shear", "yielding in tension",
+                                 "yielded before"};
+  Properties p{{"zone", std::to_string(zone + 1)},
+               {"block", z.block >= 0 && static_cast<size_t>(z.block) < s.blocks.size()
+                             ? std::to_string(s.blocks[static_cast<size_t>(z.block)].id)
+                             : std::string("-")}};
+  // Stresses as the pictures show them (MPa, tension positive).
+  std::vector<ColourBy> shown{ColourBy::kSxx, ColourBy::kSyy, ColourBy::kSxy, ColourBy::kSzz};
+  if (s.three) shown = {ColourBy::kSxx, ColourBy::kSyy, ColourBy::kSzz, ColourBy::kSxy};
+  for (ColourBy c : shown)
+    p.push_back({colour_by_names()[size_t(c)], num(zone_value(z, c), "MPa")});
+  if (s.three)
+    p.push_back({"syz", num(z.syz * 1e-6, "MPa")}), p.push_back({"sxz", num(z.sxz * 1e-6, "MPa")});
+  p.push_back({"sigma1", num(zone_value(z, ColourBy::kSigma1), "MPa")});
+  p.push_back({"sigma3", num(zone_value(z, ColourBy::kSigma3), "MPa")});
+  p.push_back({"state", states[std::clamp(zone_state_category(z.state), 0, 3)]});
+  return p;
 }
 
 }  // namespace tessera::ui

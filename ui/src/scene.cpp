@@ -180,11 +180,15 @@ ZonePalette zone_legend(const std::vector<SnapshotZone>& zones, const ViewOption
 // Zones of deformable blocks coloured by a zone quantity, with their legend.
 void add_zones(const Snapshot& s, const ViewOptions& o, Scene& out) {
   const ZonePalette palette = zone_legend(s.zones, o, out);
-  for (const SnapshotZone& z : s.zones) {
+  for (size_t i = 0; i < s.zones.size(); ++i) {
+    const SnapshotZone& z = s.zones[i];
     ScenePolygon p;
     p.block = z.block;
-    for (uint32_t n : z.n)
+    p.zone = static_cast<int>(i);
+    for (int k = 0; k < 3; ++k) {  // a triangle's corners
+      const uint32_t n = z.n[k];
       p.points.push_back(s.nodes_start[n] + o.magnify * (s.nodes[n] - s.nodes_start[n]));
+    }
     p.colour = palette(z);
     out.zones.push_back(std::move(p));
   }
@@ -488,6 +492,13 @@ int block_at(const Scene& scene, Vec2 p) {
   // The polygon drawn last wins.
   for (auto it = scene.polygons.rbegin(); it != scene.polygons.rend(); ++it)
     if (it->points.size() >= 3 && inside(it->points.data(), it->points.size(), p)) return it->block;
+  return -1;
+}
+
+int zone_at(const Scene& scene, Vec2 p) {
+  for (const auto& z : scene.zones)
+    if (z.zone >= 0 && z.points.size() >= 3 && inside(z.points.data(), z.points.size(), p))
+      return z.zone;
   return -1;
 }
 

@@ -119,7 +119,7 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   std::vector<Vec3> below;
   // A polygon (clipped by the cut unless it is a section lying on it).
   const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline,
-                        bool section = false) {
+                        bool section = false, int zone = -1) {
     Vec3 n = Vec3::Zero();
     for (size_t k = 0; k < face.size(); ++k) n += face[k].cross(face[(k + 1) % face.size()]);
     const double facing = n.normalized().dot(view.eye);
@@ -130,6 +130,7 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     if (pts.size() < 3) return;
     ScenePolygon polygon;
     polygon.block = block;
+    polygon.zone = zone;
     polygon.outline = outline;
     for (const Vec3& p : pts)
       polygon.points.push_back(view(p)), polygon.depth.push_back(p.dot(view.eye));
@@ -150,7 +151,7 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
       const std::optional<Rgb> colour = zone_colour(s.zones[t.zone]);
       if (!colour) continue;
       for (int k = 0; k < 3; ++k) tri[static_cast<size_t>(k)] = node(t.n[k]);
-      show(tri, s.faces3[t.face].block, *colour, false);
+      show(tri, s.faces3[t.face].block, *colour, false, false, static_cast<int>(t.zone));
     }
   }
   std::vector<Vec3> pts;
@@ -171,7 +172,8 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   const auto height = [&](const Vec3& p) { return up.dot(p - o.cut_point); };
   std::vector<Vec3> section;
   if (zone_colour && !s.tris3.empty())
-    for (const SnapshotZone& z : s.zones) {
+    for (size_t i = 0; i < s.zones.size(); ++i) {
+      const SnapshotZone& z = s.zones[i];
       if (z.block < 0) continue;
       Vec3 c[4];
       double d[4];
@@ -183,7 +185,7 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
       }
       const std::vector<Vec3> cut = around_normal(o, section);
       const std::optional<Rgb> colour = zone_colour(z);
-      if (!cut.empty() && colour) show(cut, z.block, *colour, false, true);
+      if (!cut.empty() && colour) show(cut, z.block, *colour, false, true, static_cast<int>(i));
     }
   std::vector<std::vector<Vec3>> caps(s.blocks.size());
   for (size_t f = 0; f < s.faces3.size(); ++f) {

@@ -674,6 +674,7 @@ void VtkView::mouseReleaseEvent(QMouseEvent* e) {
       }
     }
     emit picked(contact >= 0 ? -1 : block_at(scene_, p), contact);
+    if (const int zone = contact >= 0 ? -1 : zone_at(scene_, p); zone >= 0) emit zonePicked(zone);
   }
   button_ = Qt::NoButton;
 }

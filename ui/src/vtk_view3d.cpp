@@ -42,10 +42,11 @@ void VtkView::rebuild3() {
   std::vector<std::vector<Vec3>> faces, outlines;
   std::vector<Rgb> colours, outline_colours;
   std::vector<std::array<Vec3, 2>> highlight;
-  face_block_.clear();
+  face_block_.clear(), face_zone_.clear();
   for (const auto& p : scene_.polygons) {
     if (p.world.size() < 3) continue;
     faces.push_back(p.world), colours.push_back(p.colour), face_block_.push_back(p.block);
+    face_zone_.push_back(p.zone);
     if (p.outline) outlines.push_back(p.world), outline_colours.push_back(p.colour);
     if (std::find(highlight_blocks_.begin(), highlight_blocks_.end(), p.block) !=
         highlight_blocks_.end())
@@ -173,7 +174,7 @@ void VtkView::placeTriad() {
 
 void VtkView::pick3(QPoint at) {
   const double r = devicePixelRatioF();
-  int block = -1, contact = -1;
+  int block = -1, contact = -1, zone = -1;
   if (picker_->Pick(at.x() * r, (height() - at.y()) * r, 0, renderer_) &&
       picker_->GetCellId() >= 0 && picker_->GetDataSet()) {
     vtkDataArray* index = picker_->GetDataSet()->GetCellData()->GetArray("index");
@@ -183,9 +184,10 @@ void VtkView::pick3(QPoint at) {
       contact = scene_.bars[static_cast<size_t>(i)].contact;
     else if (i >= 0 && picker_->GetActor() == blocks_actor_.Get() &&
              static_cast<size_t>(i) < face_block_.size())
-      block = face_block_[static_cast<size_t>(i)];
+      block = face_block_[static_cast<size_t>(i)], zone = face_zone_[static_cast<size_t>(i)];
   }
   emit picked(block, contact);
+  if (zone >= 0) emit zonePicked(zone);
 }
 
 QVector<int> VtkView::blocksIn(const QRect& r) {

@@ -45,5 +45,7 @@ class ModelTree : public QTreeWidget {
 // What a block or contact of a snapshot shows in the property panel.
 Properties block_properties(const Snapshot& s, int block);
 Properties contact_properties(const Snapshot& s, int contact);
+// A zone's stresses (MPa, tension positive) and plastic state.
+Properties zone_properties(const Snapshot& s, int zone);
 
 }  // namespace tessera::ui

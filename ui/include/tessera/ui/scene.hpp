@@ -19,6 +19,7 @@ struct ScenePolygon {
   std::vector<Vec2> points;
   Rgb colour;
   int block = -1;             // index in the snapshot
+  int zone = -1;              // the zone it draws (zones coloured by value), else -1
   bool outline = true;        // drawn with a dark edge (a 3D zone's surface triangle is not)
   std::vector<double> depth;  // 3D: each point's height towards the viewer, for a depth buffer
   std::vector<Vec3> world;    // 3D: the points in model coordinates (magnified), for a camera
@@ -85,5 +86,7 @@ std::string value_title(ColourBy c);
 // Index of the block under a model point (-1 if none) and of the contact bar (-1).
 int block_at(const Scene& scene, Vec2 p);
 int bar_at(const Scene& scene, Vec2 p);
+// Index of the zone drawn under a model point (2D scenes with zones coloured; -1 if none).
+int zone_at(const Scene& scene, Vec2 p);
 
 }  // namespace tessera::ui

@@ -88,6 +88,8 @@ class VtkView : public QOpenGLWidget {
 
  signals:
   void picked(int block, int contact);
+  // After `picked`: the zone under the click, when zones are drawn in their colours.
+  void zonePicked(int zone);
   // A finished shape, as the script command that makes it (group and material added by the
   // window).
   void drawn(DrawMode mode, const QVector<QPointF>& points);
@@ -154,8 +156,8 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkRenderer> triad_;  // the axes triad (east, north, up), turned with the camera
   vtkNew<vtkAxesActor> triad_axes_;
   vtkNew<vtkCellPicker> picker_;
-  std::vector<int> face_block_;    // 3D: the block of each face drawn
-  QRubberBand* rubber_ = nullptr;  // 3D: the select tool's box on the screen
+  std::vector<int> face_block_, face_zone_;  // 3D: the block (zone) each face drawn shows
+  QRubberBand* rubber_ = nullptr;            // 3D: the select tool's box on the screen
   double azimuth_ = 210, elevation_ = 25;
   Scene scene_;
   bool has_scene_ = false;
