@@ -385,6 +385,13 @@ class TestGui : public QObject {
     QVERIFY(open_shown(w, path));
     QVERIFY(w.snapshot()->three);
     QCOMPARE(w.snapshot()->blocks.size(), size_t(1 + 6 * 6 + 3));
+    // A run moves the same faces: VTK's arrays are updated in place, not rebuilt.
+    const size_t in_place = w.view()->updatedInPlace();
+    const double z_before = w.snapshot()->blocks.back().z;
+    w.runCommand("step 200");
+    QVERIFY(wait_finished(w));
+    QVERIFY(w.snapshot()->blocks.back().z != z_before);
+    QVERIFY(w.view()->updatedInPlace() > in_place);
     // The sub-contacts inside the wall show through translucent blocks.
     auto* see_through = w.findChild<QAction*>("see_through");
     QVERIFY(see_through);

@@ -21,8 +21,37 @@ void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segment
   pd->SetLines(lines);
 }
 
-void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
+namespace {
+// Whether the polydata holds polygons of these sizes, in this order (a run's next frame).
+bool same_cells(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys) {
+  vtkCellArray* cells = pd->GetPolys();
+  if (!cells || !pd->GetPoints() || cells->GetNumberOfCells() != vtkIdType(polys.size()))
+    return false;
+  vtkIdType total = 0;
+  for (size_t i = 0; i < polys.size(); ++i) {
+    if (cells->GetCellSize(vtkIdType(i)) != vtkIdType(polys[i].size())) return false;
+    total += vtkIdType(polys[i].size());
+  }
+  return pd->GetNumberOfPoints() == total &&
+         vtkUnsignedCharArray::SafeDownCast(pd->GetCellData()->GetScalars());
+}
+}  // namespace
+
+bool fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
                    const std::vector<Rgb>& colours) {
+  if (same_cells(pd, polys)) {
+    // The same polygons moved or recoloured: the arrays VTK holds are updated in place.
+    vtkPoints* points = pd->GetPoints();
+    auto* rgb = vtkUnsignedCharArray::SafeDownCast(pd->GetCellData()->GetScalars());
+    vtkIdType k = 0;
+    for (size_t i = 0; i < polys.size(); ++i) {
+      for (const Vec3& p : polys[i]) points->SetPoint(k++, p.data());
+      const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
+      rgb->SetTypedTuple(vtkIdType(i), c);
+    }
+    points->Modified(), rgb->Modified(), pd->Modified();
+    return true;
+  }
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> cells;
   vtkNew<vtkUnsignedCharArray> rgb;
@@ -42,6 +71,7 @@ void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
   pd->SetPolys(cells);
   pd->GetCellData()->SetScalars(rgb);
   pd->GetCellData()->AddArray(index);
+  return false;
 }
 
 }  // namespace tessera::ui

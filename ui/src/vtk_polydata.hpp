@@ -11,8 +11,10 @@ class vtkPolyData;
 namespace tessera::ui {
 
 // Filled polygons with one RGB colour ("colour") and their index in the list ("index", which a
-// picked cell carries through VTK's triangle filter) per cell.
-void fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
+// picked cell carries through VTK's triangle filter) per cell. When the polydata already holds
+// polygons of the same sizes (a run's next frame), its points and colours are updated in place
+// and true is returned.
+bool fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
                    const std::vector<Rgb>& colours);
 // Line segments as line cells.
 void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments);

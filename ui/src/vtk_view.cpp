@@ -332,7 +332,7 @@ void VtkView::rebuild() {
     std::vector<std::vector<Vec2>> polys;
     std::vector<Rgb> colours;
     for (const auto& p : scene_.polygons) polys.push_back(p.points), colours.push_back(p.colour);
-    fill_polygons(blocks_, at_height(polys, 0.0), colours);
+    in_place_ += fill_polygons(blocks_, at_height(polys, 0.0), colours);
     // Block outlines above the zones, which sit above the block fills.
     fill_polygons(edges_, at_height(polys, 0.006), colours);
     std::vector<std::array<Vec2, 2>> outline = highlight_segments_;

@@ -53,7 +53,7 @@ void VtkView::rebuild3() {
       for (size_t k = 0; k < p.world.size(); ++k)
         highlight.push_back({p.world[k], p.world[(k + 1) % p.world.size()]});
   }
-  fill_polygons(blocks_, faces, colours);
+  in_place_ += fill_polygons(blocks_, faces, colours);
   fill_polygons(edges_, outlines, outline_colours);
   fill_lines(highlight_, highlight);
   fill_polygons(zones_, {}, {});

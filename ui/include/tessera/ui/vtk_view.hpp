@@ -66,6 +66,9 @@ class VtkView : public QOpenGLWidget {
   // The same in model coordinates, for 3D models.
   void setPreview3(const std::vector<std::array<Vec3, 2>>& segments);
   size_t previewSegments() const { return preview_count_; }
+  // Frames whose block faces were updated in VTK's arrays in place (the same faces moved or
+  // recoloured, as during a run) rather than rebuilt.
+  size_t updatedInPlace() const { return in_place_; }
   // Whether the contacts have a colour bar of their own (beside the blocks' or zones').
   bool contactScaleShown() const;
   // The caption as drawn (wrapped to the window).
@@ -161,6 +164,7 @@ class VtkView : public QOpenGLWidget {
   double azimuth_ = 210, elevation_ = 25;
   Scene scene_;
   bool has_scene_ = false;
+  size_t in_place_ = 0;
   QPoint press_, last_;
   Qt::MouseButton button_ = Qt::NoButton;
   bool dragged_ = false;
