@@ -4,6 +4,7 @@
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QLineEdit>
@@ -561,6 +562,26 @@ class TestGui : public QObject {
     qInfo("exported cut view: %ld pixels of the block, %ld of the wall", block_pixels, wall_pixels);
     QVERIFY(block_pixels > 500);
     QCOMPARE(wall_pixels, 0L);
+    // The View menu's dialog makes the same cut: it offers a vertical plane facing the viewer
+    // through the blocks' middle; moved to y = 23, it opens the wall again.
+    o.cut = false;
+    w.setViewOptions(o);
+    QTimer::singleShot(0, [] {
+      auto* d = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+      QVERIFY(d);
+      auto* dir = d->findChild<QDoubleSpinBox*>("dip_direction");
+      auto* y = d->findChild<QDoubleSpinBox*>("y");
+      QVERIFY(dir && y);
+      QCOMPARE(dir->value(), 180.0);
+      y->setValue(23);
+      d->accept();
+    });
+    w.cutDialog();
+    QVERIFY(w.viewOptions().cut);
+    QCOMPARE(w.viewOptions().cut_point.y(), 23.0);
+    QCOMPARE(w.viewOptions().cut_dip, 90.0);
+    QTest::qWait(100);
+    QVERIFY(hidden_pixels(w.view()->grabFramebuffer()).size() > 500);
     // Turned a quarter round by a right drag: still picks what is under the cursor.
     o.cut = false;
     w.setViewOptions(o);

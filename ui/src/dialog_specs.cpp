@@ -1,0 +1,285 @@
+// The Model menu's dialogs as field lists: keyword, label, unit, initial value, tip, and what a
+// naming field offers; 2D and 3D forms.
+#include "dialog_specs.hpp"
+
+namespace tessera::ui {
+
+namespace {
+DialogSpec spec(const QString& name) {
+  const QString msd = "a mean, or mean,sd for a normal spread";
+  if (name == "material")
+    return {"Material",
+            "material define",
+            {{"#name", "Name", "", "rock", "the name scripts and assignments use"},
+             {"density", "Density", "kg/m³", "2600", ""},
+             {"E", "Young's modulus", "Pa", "", "deformable blocks only"},
+             {"nu", "Poisson's ratio", "", "", ""},
+             {"model", "Zone model", "", "", "elastic, mohr-coulomb, drucker-prager or null",
+              "zone models"},
+             {"friction", "Friction angle", "deg", "", ""},
+             {"cohesion", "Cohesion", "Pa", "", ""},
+             {"tension", "Tensile strength", "Pa", "", ""},
+             {"dilation", "Dilation angle", "deg", "", ""}}};
+  if (name == "joint")
+    return {"Joint properties",
+            "joint define",
+            {{"#name", "Name", "", "joints", ""},
+             {"kn", "Normal stiffness", "Pa/m", "1e10", ""},
+             {"ks", "Shear stiffness", "Pa/m", "1e10", ""},
+             {"friction", "Friction angle", "deg", "30", ""},
+             {"cohesion", "Cohesion", "Pa", "", ""},
+             {"tension", "Tensile strength", "Pa", "", ""},
+             {"dilation", "Dilation angle", "deg", "", ""}}};
+  if (name == "jset")
+    return {"Joint set",
+            "jset",
+            {{"angle", "Angle from x", "deg", "30", msd},
+             {"spacing", "Spacing", "m", "1", msd},
+             {"trace", "Trace length", "m", "", "empty: traces run through; " + msd},
+             {"gap", "Gap (rock bridge)", "m", "", msd},
+             {"origin", "A trace through", "x,y m", "", ""},
+             {"seed", "Random seed", "", "", ""},
+             {"!extend", "Trace ends run to block edges", "", "", ""},
+             {"name", "Name", "", "", "the joints' name for properties and selections"}},
+            true};
+  const CommandField core_name{"name", "Name", "", "", "the opening's joints, e.g. for pressure"};
+  const CommandField core{"group", "Group of the core", "", "tunnel",
+                          "excavate it with delete group=..."};
+  if (name == "tunnel")
+    return {"Circular opening",
+            "tunnel circle",
+            {{"centre", "Centre", "x,y m", "0,0", ""},
+             {"radius", "Radius", "m", "1", ""},
+             {"segments", "Segments", "", "24", ""},
+             core_name,
+             core}};
+  if (name == "horseshoe")
+    return {"Horseshoe opening",
+            "tunnel horseshoe",
+            {{"centre", "Middle of the floor", "x,y m", "0,0", ""},
+             {"width", "Width", "m", "6", ""},
+             {"height", "Height", "m", "6", "walls plus the half-circle roof"},
+             {"segments", "Roof segments", "", "12", ""},
+             core_name,
+             core}};
+  if (name == "rectangle")
+    return {"Rectangular opening",
+            "tunnel rectangle",
+            {{"#a", "A corner", "x,y m", "0,0", ""},
+             {"#b", "The opposite corner", "x,y m", "4,3", ""},
+             core_name,
+             core}};
+  if (name == "region")
+    return {"Region (a box to cut)",
+            "region",
+            {{"#a", "A corner", "x,y m", "0,0", ""},
+             {"#b", "The opposite corner", "x,y m", "20,10", ""},
+             {"group", "Group", "", "", "", "groups"},
+             {"material", "Material", "", "", "", "materials"}}};
+  if (name == "voronoi")
+    return {"Voronoi cells",
+            "voronoi",
+            {{"size", "Mean cell size", "m", "0.5", ""},
+             {"seed", "Random seed", "", "", ""},
+             {"name", "Name", "", "", ""}},
+            true};
+  if (name == "wall")
+    return {"Running-bond wall",
+            "wall",
+            {{"brick", "Brick", "L,H m", "0.4,0.2", ""},
+             {"courses", "Courses", "", "10", ""},
+             {"bricks", "Bricks per course", "", "8", ""},
+             {"origin", "Bottom left", "x,y m", "0,0", ""},
+             {"group", "Group", "", "wall", ""},
+             {"material", "Material", "", "", "", "materials"}}};
+  if (name == "arch")
+    return {"Arch",
+            "arch",
+            {{"centre", "Centre of the intrados", "x,y m", "0,0", ""},
+             {"radius", "Intrados radius", "m", "2", ""},
+             {"thickness", "Ring thickness", "m", "0.3", ""},
+             {"voussoirs", "Voussoirs", "", "15", ""},
+             {"half_angle", "Half angle", "deg", "90", "90: semicircular"},
+             {"abutment", "Abutment height", "m", "", ""},
+             {"group", "Group", "", "arch", ""},
+             {"material", "Material", "", "", "", "materials"}}};
+  if (name == "zones")
+    return {"Zones (deformable blocks)",
+            "zone generate",
+            {{"edge", "Zone edge", "m", "0.5", ""},
+             {"fine", "Finer edge near a point", "m", "", ""},
+             {"near", "Near", "x,y m", "", ""},
+             {"radius", "Within", "m", "", ""},
+             {"growth", "Growth away from it", "", "", "e.g. 0.3"},
+             {"order", "Zone order", "1 or 2", "", "2: 10-node tetrahedra (3D models)"}},
+            true};
+  if (name == "boundary")
+    return {"Boundary condition on nodes",
+            "boundary",
+            {{"fix", "Fix", "x, y or xy", "", ""},
+             {"stress", "Applied stress", "SXX,SYY,SXY Pa", "", "tension positive"},
+             {"pressure", "Pressure", "Pa", "", ""},
+             {"joints", "Along joints named", "", "", "e.g. the opening's name", "joint names"}},
+            true};
+  if (name == "insitu")
+    return {"In-situ stress",
+            "insitu",
+            {{"stress", "Stress", "SXX,SYY,SXY Pa", "-5e6,-10e6,0", "tension positive"},
+             {"szz", "Out of plane", "Pa", "", "empty: nu (sxx + syy)"},
+             {"ygradient", "Gradient with height", "Pa/m", "", "e.g. k rho g, rho g, 0"},
+             {"y0", "Height of the given stress", "m", "", ""}}};
+  if (name == "gravity")
+    return {"Gravity",
+            "gravity",
+            {{"#gx", "Along x", "m/s²", "0", ""},
+             {"#gy", "Along y", "m/s²", "-9.81", "2D: -9.81 (y up); 3D: 0"},
+             {"#gz", "Along z", "m/s²", "", "3D models only: -9.81 (z up)"}}};
+  if (name == "damping")
+    return {"Damping",
+            "damping",
+            {{"#mode", "Kind", "", "local",
+              "local (static), global (adaptive viscous) or none (dynamic analysis)"},
+             {"#value", "Alpha or ratio", "", "",
+              "local: alpha (default 0.8); global: the power ratio removed (0.5)"}}};
+  if (name == "assign")
+    return {"Assign to the selection",
+            "",
+            {{"group", "Group", "", "", "puts the selected blocks into this group", "groups"},
+             {"material", "Material", "", "", "gives them this material", "materials"},
+             {"joint", "Joint properties", "", "", "between the selected blocks (needs the group)",
+              "joint properties"}}};
+  return {};
+}
+
+// The 3D forms of the dialogs whose commands differ in 3D (points x,y,z; planes by dip and dip
+// direction); the others as in 2D, and none for commands of 2D models only.
+DialogSpec spec3(const QString& name) {
+  const QString msd = "a mean, or mean,sd for a normal spread";
+  const CommandField group{"group", "Group", "", "", "", "groups"};
+  const CommandField material{"material", "Material", "", "", "", "materials"};
+  const CommandField name_field{"name", "Name", "", "", "the joints' name for properties"};
+  if (name == "box")
+    return {"Block (box)",
+            "block box",
+            {{"#a", "A corner", "x,y,z m", "0,0,0", ""},
+             {"#b", "The opposite corner", "x,y,z m", "10,10,10", ""},
+             group,
+             material}};
+  if (name == "prism")
+    return {"Block (prism)",
+            "block prism",
+            {{"#base", "Base polygon", "x,y x,y ... m", "0,0 4,0 4,3 0,3",
+              "a convex polygon, corners separated by spaces"},
+             {"z", "From z to z", "z0,z1 m", "0,2", ""},
+             group,
+             material}};
+  if (name == "region")
+    return {"Region (a box to cut)",
+            "region",
+            {{"#a", "A corner", "x,y,z m", "0,0,0", ""},
+             {"#b", "The opposite corner", "x,y,z m", "20,20,20", ""},
+             group,
+             material}};
+  if (name == "crack")
+    return {"Crack (a plane)",
+            "crack",
+            {{"dip", "Dip", "deg", "60", "from horizontal"},
+             {"ddir", "Dip direction", "deg", "90", "clockwise from north (+y)"},
+             {"origin", "Through", "x,y,z m", "0,0,0", ""},
+             {"radius", "Disc radius", "m", "", "empty: the whole plane"},
+             name_field},
+            true};
+  if (name == "jset")
+    return {"Joint set",
+            "jset",
+            {{"dip", "Dip", "deg", "60", msd},
+             {"ddir", "Dip direction", "deg", "90", msd},
+             {"spacing", "Spacing", "m", "2", msd},
+             {"origin", "A plane through", "x,y,z m", "", ""},
+             {"persistence", "Persistence", "0 to 1", "", "the share of blocks a plane cuts"},
+             {"seed", "Random seed", "", "", ""},
+             name_field},
+            true};
+  const CommandField core{"group", "Group of the core", "", "tunnel",
+                          "excavate it with delete group=... (with rounds: group_1, ...)"};
+  const CommandField opening{"name", "Name", "", "", "the opening's joints, e.g. for pressure"};
+  if (name == "tunnel" || name == "horseshoe") {
+    DialogSpec s{name == "tunnel" ? "Circular opening" : "Horseshoe opening",
+                 name == "tunnel" ? "tunnel circle" : "tunnel horseshoe",
+                 {{"centre", name == "tunnel" ? "Portal centre" : "Middle of the portal floor",
+                   "x,y,z m", "0,0,0", ""},
+                  {"axis", "Axis", "dx,dy,dz", "0,1,0", "the direction it runs"},
+                  {"length", "Length", "m", "10", ""}}};
+    if (name == "tunnel")
+      s.fields.push_back({"radius", "Radius", "m", "3", ""});
+    else
+      s.fields.insert(s.fields.end(), {{"width", "Width", "m", "6", ""},
+                                       {"height", "Height", "m", "6", "walls plus the roof"}});
+    s.fields.insert(s.fields.end(),
+                    {{"segments", "Segments", "", name == "tunnel" ? "24" : "12", ""},
+                     {"rounds", "Rounds of advance", "", "", "groups G_1 ... G_N"},
+                     opening,
+                     core,
+                     {"!join", "Join the rock around it back into bodies", "", "on", ""}});
+    return s;
+  }
+  if (name == "wall")
+    return {"Running-bond wall",
+            "wall",
+            {{"brick", "Brick", "L,H,W m", "0.6,0.3,0.3", "along x, up z, thick along y"},
+             {"courses", "Courses", "", "6", ""},
+             {"bricks", "Bricks per course", "", "6", ""},
+             {"origin", "Bottom corner", "x,y,z m", "0,0,0", ""},
+             {"group", "Group", "", "wall", ""},
+             material,
+             name_field}};
+  if (name == "zones")
+    return {"Zones (deformable blocks)",
+            "zone generate",
+            {{"edge", "Zone edge", "m", "1", ""},
+             {"fine", "Finer edge near a point", "m", "", ""},
+             {"near", "Near", "x,y,z m", "", ""},
+             {"radius", "Within", "m", "", ""},
+             {"growth", "Growth away from it", "", "", "e.g. 0.3"},
+             {"order", "Zone order", "1 or 2", "", "2: 10-node tetrahedra"}},
+            true};
+  const CommandField x{"x", "Box: x from, to", "m", "", "nodes inside the box"},
+      y{"y", "y from, to", "m", "", ""}, z{"z", "z from, to", "m", "", ""};
+  if (name == "boundary")
+    return {"Boundary condition on nodes",
+            "boundary",
+            {{"fix", "Fix", "x, y, z, xy ... xyz", "", ""},
+             {"velocity", "Velocity", "vx,vy,vz m/s", "", ""},
+             {"stress", "Applied stress", "SXX,SYY,SZZ,SXY,SYZ,SXZ Pa", "", "tension positive"},
+             {"pressure", "Pressure", "Pa", "", ""},
+             {"joints", "Along joints named", "", "", "e.g. the opening's name", "joint names"},
+             x,
+             y,
+             z}};
+  if (name == "insitu")
+    return {"In-situ stress",
+            "insitu",
+            {{"stress", "Stress", "SXX,SYY,SZZ,SXY,SYZ,SXZ Pa", "-10e6,-10e6,-10e6,0,0,0",
+              "tension positive"},
+             {"zgradient", "Gradient with height", "6 values, Pa/m", "", ""},
+             {"z0", "Height of the given stress", "m", "", ""}}};
+  if (name == "gravity")
+    return {"Gravity",
+            "gravity",
+            {{"#gx", "Along x", "m/s²", "0", ""},
+             {"#gy", "Along y", "m/s²", "0", ""},
+             {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
+  if (name == "rectangle" || name == "voronoi" || name == "arch") return {};
+  return spec(name);
+}
+
+}  // namespace
+
+DialogSpec dialog_spec(const QString& name, bool three) {
+  if (three) return spec3(name);
+  // Commands of 3D models only.
+  if (name == "box" || name == "prism" || name == "crack") return {};
+  return spec(name);
+}
+
+}  // namespace tessera::ui
