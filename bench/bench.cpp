@@ -5,6 +5,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "kernel.hpp"
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/contact3d/detection3.hpp"
 #include "tessera/core/parallel.hpp"
@@ -139,6 +140,10 @@ int main(int argc, char** argv) {
   app.add_option("--cycles", cycles, "Cycles to run");
   app.add_option("--solve", ratio, "Instead of --cycles, solve to this unbalanced-force ratio");
   app.add_option("--threads", threads, "Worker threads")->check(CLI::PositiveNumber);
+  bool kernel = false;
+  app.add_flag("--kernel", kernel,
+               "wall: also run the speed-of-light kernel (bench/kernel.hpp) on the same blocks and "
+               "contacts for as many cycles, and report Tessera's time as a ratio to it");
   CLI11_PARSE(app, argc, argv);
 
   set_thread_count(threads);
@@ -165,6 +170,15 @@ int main(int argc, char** argv) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double per_cycle = seconds / static_cast<double>(std::max<uint64_t>(ran, 1));
+  // The kernel on the model as it stands after the run (its contacts and lengths).
+  std::string versus;
+  if (kernel && m.dim == 2) {
+    const bench::KernelResult k = bench::run_kernel(m, std::max<uint64_t>(ran, 1));
+    versus = fmt::format(
+        ", \"kernel_ms_per_cycle\": {:.4f}, \"ratio_to_kernel\": {:.2f}, "
+        "\"kernel_top_y\": {:.4f}",
+        k.ms_per_cycle, 1e3 * per_cycle / k.ms_per_cycle, k.top_y);
+  }
   // Contacts: block pairs (2D corner contacts); in 3D also the sub-contacts updated per cycle.
   size_t contacts = m.dim == 3 ? m.contacts3.size() : m.contacts.size(), updates = contacts;
   if (m.dim == 3) {
@@ -182,10 +196,10 @@ int main(int argc, char** argv) {
              "\"contacts\": {}, \"sub_contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, "
              "\"ms_per_cycle\": {:.4f}, \"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": "
              "{:.4g}, \"ratio\": {:.3e}, "
-             "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}}}",
+             "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}{}}}",
              scene, cols, rows, threads, m.block_count(), contacts, m.dim == 3 ? updates : 0, ran,
              seconds, 1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(updates) / per_cycle,
-             m.ratio, converged ? "true" : "false", m.detection_passes, stages)
+             m.ratio, converged ? "true" : "false", m.detection_passes, stages, versus)
       << std::endl;
   return 0;
 }
