@@ -8,6 +8,12 @@ namespace tessera {
 
 namespace {
 
+// Outward unit normal of the edge starting at global vertex v (counter-clockwise blocks).
+inline Vec2 edge_normal(const Blocks& B, uint32_t v) {
+  const Vec2& u = B.world_edge_dir[v];
+  return {u.y(), -u.x()};
+}
+
 // Chord of two overlapping circles (radius r1, r2, centres D apart).
 inline double circle_chord(double d, double r1, double r2) {
   if (d <= 0.0 || d >= r1 + r2 || d <= std::abs(r1 - r2)) return 0.0;
@@ -15,63 +21,7 @@ inline double circle_chord(double d, double r1, double r2) {
   return k > 0.0 ? std::sqrt(k) / d : 0.0;
 }
 
-// Outward unit normal of the edge starting at global vertex v (counter-clockwise blocks).
-inline Vec2 edge_normal(const Blocks& B, uint32_t v) {
-  const Vec2& u = B.world_edge_dir[v];
-  return {u.y(), -u.x()};
-}
-
-// Whether the unit direction m points into the arc (between its end normals).
-inline bool faces(const CornerArc& arc, const Vec2& m) {
-  constexpr double slack = 1e-12;
-  return cross(arc.n_in, m) >= -slack && cross(m, arc.n_out) >= -slack;
-}
-
 }  // namespace
-
-CornerArc corner_arc(const Blocks& B, uint32_t b, uint32_t v) {
-  const Vec2& ui = B.world_edge_dir[B.prev_vertex(b, v)];
-  const Vec2& uo = B.world_edge_dir[v];
-  return {B.world_arc_centre[v], B.arc_radius[v], Vec2(ui.y(), -ui.x()), Vec2(uo.y(), -uo.x())};
-}
-
-bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerArc& arc, double max_depth,
-                  FeatureHit& hit, double* margin) {
-  const Vec2& c = arc.centre;
-  const double r = arc.radius;
-  const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
-  const uint32_t vn = v0 + (vk - v0 + 1) % n;
-  const Vec2& p = B.world_vertex[vk];
-  const Vec2& u = B.world_edge_dir[vk];
-  const double len = B.edge_length[vk];
-  const Vec2 d = c - p;
-  const double t = d.dot(u);
-  // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
-  // exactly at a tangent point without a feature.
-  const double slack = 1e-9 * len;
-  const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
-  const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
-  if (t < lo || t > hi) return false;
-  const Vec2 nrm(u.y(), -u.x());
-  const double s = d.dot(nrm);
-  // The arc's point nearest the edge's line. An arc that does not face the edge (its circle
-  // would, reaching past the block's own outline) comes nearest at one of its ends, where it
-  // meets the block's straight edges.
-  const bool facing = faces(arc, -nrm);
-  const Vec2 q = facing                                    ? Vec2(c - r * nrm)
-                 : arc.n_in.dot(nrm) <= arc.n_out.dot(nrm) ? Vec2(c + r * arc.n_in)
-                                                           : Vec2(c + r * arc.n_out);
-  const double gap = (q - p).dot(nrm);
-  if (gap < -max_depth) return false;
-  hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
-  hit.point = q - nrm * (0.5 * gap);
-  const double o = -gap;
-  hit.chord = facing && o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
-  // Outside a convex block, a point over an edge's span is in that edge's Voronoi region.
-  if (margin)
-    *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
-  return true;
-}
 
 bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool corners, int first,
                      int count, double max_depth, FeatureHit& hit) {
@@ -101,7 +51,7 @@ bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool cor
       // way, else from the end of the arc nearer to the other one.
       Vec2 qa = c;
       double ra = r;
-      if (!faces(arc, -dv / d)) {
+      if (!arc_faces(arc, -dv / d)) {
         const Vec2 e0 = c + r * arc.n_in, e1 = c + r * arc.n_out;
         qa = (e0 - cb).squaredNorm() <= (e1 - cb).squaredNorm() ? e0 : e1, ra = 0.0;
         dv = qa - cb, d = dv.norm();

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "tessera/contact2d/blocks.hpp"
+#include "tessera/contact2d/contacts.hpp"
 
 namespace tessera {
 
@@ -28,9 +30,6 @@ struct CornerArc {
   Vec2 n_in = Vec2::Zero(), n_out = Vec2::Zero();
 };
 
-// The arc of corner v of block b, from the world cache.
-CornerArc corner_arc(const Blocks& blocks, uint32_t b, uint32_t v);
-
 // Searches the features of block b nearest to the arc. Features are
 // numbered 2k (corner k) and 2k+1 (edge from vertex k to k+1), k local to b; the search covers
 // `count` features starting at `first` (modulo the block's feature count). Corners of b are
@@ -45,14 +44,63 @@ inline double max_contact_depth(const Blocks& blocks, uint32_t a, uint32_t b) {
   return 0.25 * std::min(blocks.bound_radius[a], blocks.bound_radius[b]);
 }
 
+// Whether the unit direction m points into the arc (between its end normals).
+inline bool arc_faces(const CornerArc& arc, const Vec2& m) {
+  constexpr double slack = 1e-12;
+  return cross(arc.n_in, m) >= -slack && cross(m, arc.n_out) >= -slack;
+}
+
+// The arc of corner v of block b, from the world cache (inline: the contact update calls it for
+// every contact every cycle).
+inline CornerArc corner_arc(const Blocks& B, uint32_t b, uint32_t v) {
+  const Vec2& ui = B.world_edge_dir[B.prev_vertex(b, v)];
+  const Vec2& uo = B.world_edge_dir[v];
+  return {B.world_arc_centre[v], B.arc_radius[v], Vec2(ui.y(), -ui.x()), Vec2(uo.y(), -uo.x())};
+}
+
 // The straight part of the edge starting at global vertex vk of block b against the arc; false
 // if the arc centre does not project onto it. The gap is that of the arc's point nearest the
 // edge's line: straight towards it when the arc faces the edge, else the nearer end of the arc.
 // `margin`, if given, is positive when no other feature of the block can be nearer, so that the
 // search may stop here: the arc centre lies outside a convex block (the edge's Voronoi region), or
 // deep inside the span.
-bool edge_feature(const Blocks& blocks, uint32_t b, uint32_t vk, const CornerArc& arc,
-                  double max_depth, FeatureHit& hit, double* margin);
+inline bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerArc& arc,
+                         double max_depth, FeatureHit& hit, double* margin) {
+  const Vec2& c = arc.centre;
+  const double r = arc.radius;
+  const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
+  const uint32_t vn = v0 + (vk - v0 + 1) % n;
+  const Vec2& p = B.world_vertex[vk];
+  const Vec2& u = B.world_edge_dir[vk];
+  const double len = B.edge_length[vk];
+  const Vec2 d = c - p;
+  const double t = d.dot(u);
+  // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
+  // exactly at a tangent point without a feature.
+  const double slack = 1e-9 * len;
+  const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
+  const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
+  if (t < lo || t > hi) return false;
+  const Vec2 nrm(u.y(), -u.x());
+  const double s = d.dot(nrm);
+  // The arc's point nearest the edge's line. An arc that does not face the edge (its circle
+  // would, reaching past the block's own outline) comes nearest at one of its ends, where it
+  // meets the block's straight edges.
+  const bool facing = arc_faces(arc, -nrm);
+  const Vec2 q = facing                                    ? Vec2(c - r * nrm)
+                 : arc.n_in.dot(nrm) <= arc.n_out.dot(nrm) ? Vec2(c + r * arc.n_in)
+                                                           : Vec2(c + r * arc.n_out);
+  const double gap = (q - p).dot(nrm);
+  if (gap < -max_depth) return false;
+  hit.kind = kCornerEdge, hit.feature = vk, hit.gap = gap, hit.normal = nrm;
+  hit.point = q - nrm * (0.5 * gap);
+  const double o = -gap;
+  hit.chord = facing && o > 0.0 ? 2.0 * std::sqrt(o * std::max(2.0 * r - o, 0.0)) : 0.0;
+  // Outside a convex block, a point over an edge's span is in that edge's Voronoi region.
+  if (margin)
+    *margin = (s >= 0.0 && B.all_convex[b]) ? 1.0 : std::min(t - lo, hi - t) - 4.0 * std::abs(s);
+  return true;
+}
 
 // Local feature number of a hit, for a later local search around it.
 inline int local_feature(const Blocks& blocks, uint32_t b, uint8_t kind, uint32_t feature) {
