@@ -605,6 +605,19 @@ class TestGui : public QObject {
                       side[side.size() / 2] / w.view()->devicePixelRatioF());
     QCOMPARE(picks.count(), 1);
     QCOMPARE(picks.takeFirst().at(0).toInt(), 1);
+    // A frame arriving while the user turns the camera (as during a run) leaves it where the
+    // drag has it; the window learns the view on release.
+    const QPoint m0(w.view()->width() / 2, w.view()->height() / 2);
+    QTest::mousePress(w.view(), Qt::RightButton, {}, m0);
+    QMouseEvent drag(QEvent::MouseMove, QPointF(m0 + QPoint(50, 0)), QPointF(m0 + QPoint(50, 0)),
+                     Qt::RightButton, Qt::RightButton, Qt::NoModifier);
+    QApplication::sendEvent(w.view(), &drag);
+    const double dragged = w.view()->azimuth();
+    QVERIFY(std::abs(dragged - 250.0) < 1e-9);  // 270 - 0.4 x 50
+    w.setViewOptions(w.viewOptions());          // a frame built for the old view
+    QCOMPARE(w.view()->azimuth(), dragged);
+    QTest::mouseRelease(w.view(), Qt::RightButton, {}, m0 + QPoint(50, 0));
+    QCOMPARE(w.viewOptions().azimuth, dragged);
     // Perspective: the same model, still in view.
     auto* perspective = w.findChild<QAction*>("perspective");
     QVERIFY(perspective);
@@ -615,6 +628,15 @@ class TestGui : public QObject {
     if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
       w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
                                        "/view_3d_perspective.png");
+    // A 2D model keeps its flat, parallel view whatever the 3D setting.
+    MainWindow flat;
+    QVERIFY(open_fitted(flat, script_));
+    const QPoint flat_at = flat.view()->pixelOf({1.0, 2.0});
+    flat.findChild<QAction*>("perspective")->trigger();
+    QVERIFY(flat.view()->perspective());
+    QCOMPARE(flat.view()->pixelOf({1.0, 2.0}), flat_at);
+    flat.view()->resetCamera();
+    QCOMPARE(flat.view()->pixelOf({1.0, 2.0}), flat_at);
   }
 
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in
@@ -927,33 +949,55 @@ class TestGui : public QObject {
     o.colour = ColourBy::kSzz;
     o.cut = true, o.cut_dip = 0, o.cut_dip_direction = 0;
     o.cut_point = Vec3(0, 0, 1.0 / 3.0);
+    // The window's scene (world points) and a figure's seen from straight above (elevation 90:
+    // the sections, at height 1/3, lie flat on the view plane, so their drawn areas are true).
+    o.elevation = 90;
     for (const bool camera : {false, true}) {
       const Scene scene = build_scene(*w.snapshot(), o, camera);
+      QVERIFY(scene.caption.find("cut by the plane 0/000") != std::string::npos);
       double area[2] = {0, 0};
       double top = -1;
       for (const ScenePolygon& p : scene.polygons) {
-        if (!camera) continue;
+        if (p.block < 0 || p.block > 1) continue;
         bool on_plane = true;
-        for (const Vec3& v : p.world) {
-          top = std::max(top, v.z());
-          on_plane = on_plane && std::abs(v.z() - 1.0 / 3.0) < 1e-9;
+        double twice = 0;
+        const size_t n = p.points.size();
+        for (size_t k = 0; k < n; ++k) {
+          const double z = camera ? p.world[k].z() : p.depth[k];
+          top = std::max(top, z);
+          on_plane = on_plane && std::abs(z - 1.0 / 3.0) < 1e-9;
+          const Vec2 a = p.points[k], b = p.points[(k + 1) % n];
+          twice += a.x() * b.y() - a.y() * b.x();
         }
-        if (!on_plane || p.block < 0 || p.block > 1) continue;
-        Vec3 n = Vec3::Zero();
-        for (size_t k = 0; k < p.world.size(); ++k)
-          n += p.world[k].cross(p.world[(k + 1) % p.world.size()]);
-        area[p.block] += 0.5 * std::abs(n.z());
+        if (on_plane) area[p.block] += 0.5 * std::abs(twice);
       }
-      if (!camera) {
-        QVERIFY(scene.caption.find("cut by the plane 0/000") != std::string::npos);
-        continue;
-      }
-      qInfo("sections: zoned block %.9f m², rigid block %.9f m²; highest point %.9f", area[0],
-            area[1], top);
+      qInfo(
+          "%s: sections of the zoned block %.9f m², of the rigid block %.9f m²; highest point "
+          "%.9f",
+          camera ? "window" : "figure", area[0], area[1], top);
       QVERIFY(std::abs(area[0] - 1.0) < 1e-9);
       QVERIFY(std::abs(area[1] - 1.0) < 1e-9);
       QVERIFY(top <= 1.0 / 3.0 + 1e-12);
     }
+    // A cut along the face between two stacked blocks: the upper one goes whole, face on the
+    // plane included, and the lower keeps its top face once (no cap over it).
+    const QString stacked = write_script(dir_, "stacked.tess",
+                                         "dimension 3\nmaterial define rock density=2500\n"
+                                         "block box 0,0,0 1,1,1 material=rock group=low\n"
+                                         "block box 0,0,1 1,1,2 material=rock group=high\n");
+    MainWindow w2;
+    QVERIFY(open_shown(w2, stacked));
+    ViewOptions flat;
+    flat.cut = true, flat.cut_dip = 0, flat.cut_point = Vec3(0.5, 0.5, 1.0);
+    const Scene face = build_scene(*w2.snapshot(), flat, true);
+    int on_plane = 0;
+    for (const ScenePolygon& p : face.polygons) {
+      QVERIFY2(p.block == 0, "nothing of the block above the cut");
+      bool flat_on = true;
+      for (const Vec3& v : p.world) flat_on = flat_on && std::abs(v.z() - 1.0) < 1e-12;
+      on_plane += flat_on;
+    }
+    QCOMPARE(on_plane, 1);
     // In the window, a click on the zoned block (coloured by szz; the rigid one grey) picks a
     // zone of it through VTK's picker.
     o.cut = false;

@@ -79,10 +79,17 @@ void CommandDialog::accept() {
   emit submitted();
 }
 
-void CommandDialog::showError(const QString& error) {
-  error_->setText(error +
-                  "\nThe model is as it was before this command: correct the fields and press OK "
-                  "again.");
+void CommandDialog::showError(const QString& error, int earlier) {
+  const QString kept =
+      earlier > 0 ? QString(
+                        "\nThe failing command was undone; the %1 before it from this dialog "
+                        "ran and stay done (Undo takes them back). Correct the fields and "
+                        "press OK again.")
+                        .arg(earlier)
+                  : QString(
+                        "\nThe model is as it was before this command: correct the fields "
+                        "and press OK again.");
+  error_->setText(error + kept);
   error_->show();
   ok_->setEnabled(true);
 }

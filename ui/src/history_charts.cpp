@@ -86,6 +86,8 @@ HistoryCharts::Chart HistoryCharts::makeChart(int yi, int xi) {
                            [this, yi, j] { plotAgainst(yi, static_cast<int>(j)); });
     QAction* save = menu.addAction("Export chart (PNG, SVG or CSV)…");
     QAction* chosen = menu.exec(view->mapToGlobal(at));
+    // (snapshots arrive while the menu is open: the histories may have changed)
+    if (static_cast<size_t>(yi) >= labels_.size()) return;
     if (chosen && chosen == large) enlarge(yi);
     if (!chosen || chosen != save) return;
     const QString path = QFileDialog::getSaveFileName(

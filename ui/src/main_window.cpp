@@ -88,7 +88,8 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(view_, &VtkView::zonePicked, this, [this](int zone) {
     if (shown_ && static_cast<size_t>(zone) < shown_->zones.size())
-      properties_->show(QString("zone %1").arg(zone + 1), zone_properties(*shown_, zone));
+      properties_->show(QString("zone %1").arg(shown_->zones[size_t(zone)].index + 1),
+                        zone_properties(*shown_, zone));
   });
   connect(tree_, &ModelTree::selected, properties_, &PropertyPanel::show);
   // Frames: at most 15 a second, pulled from the worker, never waiting for it.
@@ -360,7 +361,8 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   // A dialog's command: it closes once its commands have run, or keeps its fields and shows
   // the error.
   const bool in_dialog = !waiting_dialog_.isNull();
-  if (in_dialog && !ok) waiting_dialog_->showError(error);
+  if (in_dialog && !ok) waiting_dialog_->showError(error, waiting_ran_);
+  if (in_dialog && ok) ++waiting_ran_;
   if (in_dialog && (!ok || pending_.isEmpty())) {
     if (ok) waiting_dialog_->finish();
     waiting_dialog_.clear();

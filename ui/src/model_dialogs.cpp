@@ -175,7 +175,7 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
   // fails (onFinished).
   connect(d, &CommandDialog::submitted, this, [this, d, name] {
     if (busy()) return d->showError("The solver is running: pause or stop it first.");
-    waiting_dialog_ = d;
+    waiting_dialog_ = d, waiting_ran_ = 0;
     if (name != "assign") return runCommand(d->command());
     // Assignments: one command each, in order.
     if (selection_.isEmpty()) {

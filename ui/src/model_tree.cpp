@@ -206,7 +206,7 @@ Properties zone_properties(const Snapshot& s, int zone) {
   const SnapshotZone& z = s.zones.at(static_cast<size_t>(zone));
   static const char* states[] = {"elastic", "yielding in shear", "yielding in tension",
                                  "yielded before"};
-  Properties p{{"zone", std::to_string(zone + 1)},
+  Properties p{{"zone", std::to_string(z.index + 1)},
                {"block", z.block >= 0 && static_cast<size_t>(z.block) < s.blocks.size()
                              ? std::to_string(s.blocks[static_cast<size_t>(z.block)].id)
                              : std::string("-")}};

@@ -374,11 +374,7 @@ void set_bar_squares3(const Snapshot& s, const ViewOptions& o, Scene& out) {
     wmax = std::max(wmax, (bar.corners[3] - bar.corners[0]).norm());
   for (SceneBar& bar : out.bars) {
     const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
-    Vec3 at = c.point3;
-    if (c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size()) {
-      const SnapshotBlock& a = s.blocks[static_cast<size_t>(c.a)];
-      at += (o.magnify - 1.0) * Vec3(a.x - a.x_ref, a.y - a.y_ref, a.z - a.z_ref);
-    }
+    const Vec3 at = shown_point3(s, o, c);
     const Vec3 n = c.normal3.norm() > 0 ? Vec3(c.normal3.normalized()) : Vec3::UnitZ();
     const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     const double width = (bar.corners[3] - bar.corners[0]).norm(),
@@ -420,8 +416,9 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o, bool camera) {
     add_arrows(s, o, out, size);
     if (o.cut) {
       // What the cut takes away: sub-contacts and arrows above the plane.
+      // (at the point drawn: magnified with block a, as the faces are)
       std::erase_if(out.bars, [&](const SceneBar& bar) {
-        return cut_away(o, s.contacts[static_cast<size_t>(bar.contact)].point3);
+        return cut_away(o, shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]));
       });
       std::erase_if(out.arrows, [&](const SceneArrow& a) { return cut_away(o, a.tail3); });
       char cut[120];

@@ -90,16 +90,16 @@ Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
   return flat;
 }
 
+Vec3 shown_point3(const Snapshot& s, const ViewOptions& o, const SnapshotContact& c) {
+  if (c.a < 0 || static_cast<size_t>(c.a) >= s.blocks.size()) return c.point3;
+  return c.point3 + (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(c.a)]);
+}
+
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
   const ViewAxes view(o);
   for (SceneBar& bar : out.bars) {
     if (bar.contact < 0 || static_cast<size_t>(bar.contact) >= s.contacts.size()) continue;
-    const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
-    Vec3 at = c.point3;
-    // Magnified like the blocks: the bar moves with block a.
-    if (c.a >= 0 && static_cast<size_t>(c.a) < s.blocks.size())
-      at += (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(c.a)]);
-    bar.depth = at.dot(view.eye);
+    bar.depth = shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]).dot(view.eye);
   }
 }
 
@@ -144,10 +144,37 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   const auto node = [&](uint32_t k) {
     return Vec3(s.nodes3_start[k] + o.magnify * (s.nodes3[k] - s.nodes3_start[k]));
   };
+  const auto face_shift = [&](const Snapshot::Face3& f) {
+    return Vec3((o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(f.block)]));
+  };
+  // With a cut: each block's and zone's lowest and highest point against the plane. What has no
+  // point below it is cut away whole, faces on the plane included (they belong to the block
+  // below); only what has points on both sides gets a section.
+  const Vec3 up = cut_normal(o);
+  const auto height = [&](const Vec3& p) { return up.dot(p - o.cut_point); };
+  std::vector<double> block_lo(s.blocks.size(), 1e300), block_hi(s.blocks.size(), -1e300);
+  std::vector<double> zone_lo, zone_hi;
+  if (o.cut) {
+    for (const Snapshot::Face3& f : s.faces3)
+      for (uint32_t k = f.begin; k < f.end; ++k) {
+        const double h = height(s.points3[k] + face_shift(f));
+        const auto b = static_cast<size_t>(f.block);
+        block_lo[b] = std::min(block_lo[b], h), block_hi[b] = std::max(block_hi[b], h);
+      }
+    if (zone_colour && !s.tris3.empty()) {
+      zone_lo.assign(s.zones.size(), 1e300), zone_hi.assign(s.zones.size(), -1e300);
+      for (size_t z = 0; z < s.zones.size(); ++z)
+        for (uint32_t n : s.zones[z].n) {
+          const double h = height(node(n));
+          zone_lo[z] = std::min(zone_lo[z], h), zone_hi[z] = std::max(zone_hi[z], h);
+        }
+    }
+  }
   if (zone_colour) {
     std::vector<Vec3> tri(3);
     for (const Snapshot::Tri3& t : s.tris3) {
       by_zones[t.face] = 1;
+      if (o.cut && !(zone_lo[t.zone] < 0)) continue;  // its zone is cut away
       const std::optional<Rgb> colour = zone_colour(s.zones[t.zone]);
       if (!colour) continue;
       for (int k = 0; k < 3; ++k) tri[static_cast<size_t>(k)] = node(t.n[k]);
@@ -158,8 +185,8 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   for (size_t f = 0; f < s.faces3.size(); ++f) {
     if (by_zones[f]) continue;
     const Snapshot::Face3& face = s.faces3[f];
-    const SnapshotBlock& b = s.blocks[static_cast<size_t>(face.block)];
-    const Vec3 shift = (o.magnify - 1.0) * displacement(b);
+    if (o.cut && !(block_lo[static_cast<size_t>(face.block)] < 0)) continue;  // cut away
+    const Vec3 shift = face_shift(face);
     pts.clear();
     for (uint32_t k = face.begin; k < face.end; ++k) pts.push_back(s.points3[k] + shift);
     show(pts, face.block, colours[static_cast<size_t>(face.block)], true);
@@ -168,13 +195,11 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   // The section on the cut's plane: each zone it crosses in the zone's colour (deformable blocks
   // drawn by zones), and a cap across each other block (its faces' crossings, in turn about the
   // plane's normal: blocks are convex pieces).
-  const Vec3 up = cut_normal(o);
-  const auto height = [&](const Vec3& p) { return up.dot(p - o.cut_point); };
   std::vector<Vec3> section;
   if (zone_colour && !s.tris3.empty())
     for (size_t i = 0; i < s.zones.size(); ++i) {
       const SnapshotZone& z = s.zones[i];
-      if (z.block < 0) continue;
+      if (z.block < 0 || !(zone_lo[i] < 0 && zone_hi[i] > 0)) continue;
       Vec3 c[4];
       double d[4];
       for (int k = 0; k < 4; ++k) c[k] = node(z.n[k]), d[k] = height(c[k]);
@@ -191,12 +216,14 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   for (size_t f = 0; f < s.faces3.size(); ++f) {
     if (by_zones[f]) continue;
     const Snapshot::Face3& face = s.faces3[f];
-    const Vec3 shift = (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(face.block)]);
+    const auto blk = static_cast<size_t>(face.block);
+    if (!(block_lo[blk] < 0 && block_hi[blk] > 0)) continue;  // not across the plane
+    const Vec3 shift = face_shift(face);
     for (uint32_t k = face.begin; k < face.end; ++k) {
       const uint32_t next = k + 1 < face.end ? k + 1 : face.begin;
       const Vec3 a = s.points3[k] + shift, b = s.points3[next] + shift;
-      if (height(a) == 0) caps[static_cast<size_t>(face.block)].push_back(a);
-      add_crossing(a, b, height(a), height(b), caps[static_cast<size_t>(face.block)]);
+      if (height(a) == 0) caps[blk].push_back(a);
+      add_crossing(a, b, height(a), height(b), caps[blk]);
     }
   }
   for (size_t b = 0; b < caps.size(); ++b)

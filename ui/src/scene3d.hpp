@@ -25,6 +25,8 @@ bool cut_away(const ViewOptions& o, const Vec3& p);
 // The snapshot with block centroids, displacements and sub-contacts projected onto the view
 // plane (its 2D fields), for the contact bars and displacement arrows.
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o);
+// A sub-contact's point as drawn: magnified like the blocks, moving with block a.
+Vec3 shown_point3(const Snapshot& s, const ViewOptions& o, const SnapshotContact& c);
 // The contact bars' heights towards the viewer (the sub-contacts' points, magnified like the
 // blocks), for bars built from the projected snapshot.
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out);

@@ -185,6 +185,7 @@ void copy_zones(const Model& m, Snapshot& s) {
   for (size_t z = 0; z < c.zone_count(); ++z) {
     if (!c.materials[c.material[z]].impl->solid()) continue;
     SnapshotZone o;
+    o.index = static_cast<uint32_t>(z);
     for (int k = 0; k < 3; ++k) o.n[k] = c.zones[z][static_cast<size_t>(k)];
     o.block = owner[o.n[0]];
     const ZoneStress& st = c.stress[z];
@@ -218,6 +219,7 @@ void copy_zones3(const Model& m, Snapshot& s) {
   for (uint32_t z = 0; z < c.zone_count(); ++z) {
     c.for_zone_nodes(z, [&](uint32_t n) { around[fill[n]++] = z; });
     SnapshotZone& o = s.zones[z];
+    o.index = z;
     for (size_t k = 0; k < 4; ++k) o.n[k] = c.zones[z][k];
     const ZoneStress& st = c.stress[z];
     o.sxx = st.xx, o.syy = st.yy, o.szz = st.zz, o.sxy = st.xy, o.syz = st.yz, o.sxz = st.xz;

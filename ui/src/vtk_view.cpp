@@ -312,9 +312,13 @@ void VtkView::showScene(const Scene& scene, bool fit) {
   scene_ = scene;
   has_scene_ = true;
   rebuild();
-  // A 3D scene built for another view (the options changed) turns the camera there.
-  const bool turn = scene_.three && (scene_.azimuth != azimuth_ || scene_.elevation != elevation_);
-  if (scene_.three) azimuth_ = scene_.azimuth, elevation_ = scene_.elevation;
+  // A 3D scene built for another view (the options changed) turns the camera there, except
+  // while the user is turning it (frames of a run keep coming; the window learns the new view
+  // on release).
+  const bool turning = button_ == Qt::RightButton && dragged_;
+  const bool turn =
+      scene_.three && !turning && (scene_.azimuth != azimuth_ || scene_.elevation != elevation_);
+  if (scene_.three && !turning) azimuth_ = scene_.azimuth, elevation_ = scene_.elevation;
   if (first || fit)
     resetCamera();
   else if (turn)
@@ -326,6 +330,7 @@ void VtkView::rebuild() {
   // Lit by the camera's headlight in 3D (ambient 0.6, diffuse 0.4: the figures' shading),
   // flat colours in 2D.
   blocks_actor_->GetProperty()->SetLighting(scene_.three);
+  blocks_actor_->GetProperty()->SetOpacity(scene_.three && see_through_ ? 0.25 : 1.0);
   if (scene_.three) {
     rebuild3();
   } else {

@@ -127,6 +127,7 @@ void VtkView::resetCamera3() {
   const Vec3 eye = centre + distance * v.eye;
   cam->SetPosition(eye.data());
   cam->SetViewUp(v.up.data());
+  cam->SetParallelProjection(!perspective_);
   renderer_->ResetCameraClippingRange();
   update();
 }
@@ -226,8 +227,10 @@ void VtkView::visibleWindow3(Vec2& lo, Vec2& hi) {
 }
 
 void VtkView::setPerspective(bool on) {
+  perspective_ = on;
   vtkCamera* cam = renderer_->GetActiveCamera();
-  if (on == !cam->GetParallelProjection()) return;
+  // 2D views stay parallel; a 3D view takes the setting when it is shown.
+  if (!scene_.three || on == !cam->GetParallelProjection()) return;
   // The same size at the focal point either way.
   const double tangent = std::tan(cam->GetViewAngle() * std::numbers::pi / 360);
   if (on) {
@@ -241,16 +244,17 @@ void VtkView::setPerspective(bool on) {
 }
 
 bool VtkView::perspective() const {
-  return !renderer_->GetActiveCamera()->GetParallelProjection();
+  return perspective_;
 }
 
 void VtkView::setSeeThrough(bool on) {
-  blocks_actor_->GetProperty()->SetOpacity(on ? 0.25 : 1.0);
+  see_through_ = on;
+  blocks_actor_->GetProperty()->SetOpacity(scene_.three && on ? 0.25 : 1.0);
   update();
 }
 
 bool VtkView::seeThrough() const {
-  return blocks_actor_->GetProperty()->GetOpacity() < 1.0;
+  return see_through_;
 }
 
 }  // namespace tessera::ui

@@ -46,7 +46,8 @@ class CommandDialog : public QDialog {
   // OK does not close the dialog: it says `submitted`, and the window closes it once the
   // command has run, or shows the command's error here with the fields as they were.
   void accept() override;
-  void showError(const QString& error);
+  // `earlier`: commands of this dialog that ran before the failing one (they stay done).
+  void showError(const QString& error, int earlier = 0);
   QString error() const;
   // Closes the dialog as accepted (the command ran).
   void finish();

@@ -157,6 +157,7 @@ class MainWindow : public QMainWindow {
   QMessageBox* error_box_ = nullptr;
   // A dialog whose command is running: closed when it succeeds, shown the error if it fails.
   QPointer<CommandDialog> waiting_dialog_;
+  int waiting_ran_ = 0;  // its commands that have run
   QComboBox *colour_box_, *contacts_box_;
   QCheckBox* vectors_box_;
   QDoubleSpinBox* magnify_box_;

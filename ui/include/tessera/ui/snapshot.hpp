@@ -51,6 +51,7 @@ struct SnapshotContact {
 // (excavated) zone has block -1.
 struct SnapshotZone {
   uint32_t n[4] = {0, 0, 0, 0};  // corner nodes: a triangle's three, a tetrahedron's four
+  uint32_t index = 0;            // the model's zone number less one (null zones are left out)
   int block = -1;
   double sxx = 0, syy = 0, sxy = 0, szz = 0;
   double syz = 0, sxz = 0;  // 3D

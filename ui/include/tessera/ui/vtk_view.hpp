@@ -162,6 +162,7 @@ class VtkView : public QOpenGLWidget {
   std::vector<int> face_block_, face_zone_;  // 3D: the block (zone) each face drawn shows
   QRubberBand* rubber_ = nullptr;            // 3D: the select tool's box on the screen
   double azimuth_ = 210, elevation_ = 25;
+  bool perspective_ = false, see_through_ = false;  // 3D settings (2D views ignore them)
   Scene scene_;
   bool has_scene_ = false;
   size_t in_place_ = 0;
