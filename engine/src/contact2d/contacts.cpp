@@ -3,12 +3,12 @@
 namespace tessera {
 
 void Contacts::clear() {
-  a.clear(), b.clear(), corner.clear(), slot.clear(), kind.clear(), feature.clear(), flags.clear();
-  joint.clear(), tag.clear(), normal.clear(), point.clear(), gap.clear(), chord.clear(),
-      length.clear();
-  fn.clear(), fs.clear(), un_prev.clear(), dilation.clear(), shear_disp.clear(), closure.clear();
-  force.clear(), force_mag.clear();
+  for_each_array([](auto& v) { v.clear(); });
   pair_begin.assign(1, 0);
+}
+
+void Contacts::reserve(size_t n) {
+  for_each_array([n](auto& v) { v.reserve(n); });
 }
 
 void Contacts::push_from(const Contacts& s, size_t i) {

@@ -149,8 +149,9 @@ void detect_contacts(Model& m) {
   std::vector<uint8_t> fixed(n);
   for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
   const auto pairs = broad_phase(boxes, fixed);
-  // Narrow phase, pair by pair in sorted order.
+  // Narrow phase, pair by pair in sorted order (about as many as last time).
   std::vector<Found> found;
+  found.reserve(m.contacts.size() + m.contacts.size() / 16 + 64);
   for (const auto& [lo, hi] : pairs) {
     corner_search(B, lo, hi, boxes[hi], tol, found);
     corner_search(B, hi, lo, boxes[lo], tol, found);
@@ -158,6 +159,7 @@ void detect_contacts(Model& m) {
   // Merge with the existing contacts (both sorted by key), keeping history.
   Contacts& old = m.contacts;
   Contacts next;
+  next.reserve(found.size());
   size_t j = 0;
   auto old_key = [&](size_t i) {
     const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);

@@ -61,6 +61,16 @@ struct Contacts {
   size_t size() const { return a.size(); }
   size_t pair_count() const { return pair_begin.size() - 1; }
   void clear();
+  // Room for n contacts in every array (a detection pass knows how many it keeps: the arrays
+  // then hold no spare capacity from doubling).
+  void reserve(size_t n);
+  // Applies f to every per-contact array (not pair_begin).
+  template <class F>
+  void for_each_array(F&& f) {
+    f(a), f(b), f(corner), f(slot), f(kind), f(feature), f(flags), f(joint), f(tag);
+    f(normal), f(point), f(gap), f(chord), f(length);
+    f(fn), f(fs), f(un_prev), f(dilation), f(shear_disp), f(closure), f(force), f(force_mag);
+  }
   // Appends a contact copied from another store (used when merging a detection pass).
   void push_from(const Contacts& src, size_t i);
   // Appends a fresh contact with no history.
