@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <tuple>
+#include <type_traits>
 
 #include "tessera/contact2d/contact_geometry.hpp"
 #include "tessera/core/step.hpp"
@@ -149,17 +151,23 @@ void detect_contacts(Model& m) {
   std::vector<uint8_t> fixed(n);
   for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
   const auto pairs = broad_phase(boxes, fixed);
-  // Narrow phase, pair by pair in sorted order (about as many as last time).
+  // Narrow phase, pair by pair in sorted order. Room for about as many finds as last time, or
+  // on a first pass three a pair (two or three corners meet a neighbour): growth by doubling
+  // would hold up to twice that while the pass runs.
   std::vector<Found> found;
-  found.reserve(m.contacts.size() + m.contacts.size() / 16 + 64);
+  found.reserve(std::max(m.contacts.size() + m.contacts.size() / 16, 3 * pairs.size()) + 64);
   for (const auto& [lo, hi] : pairs) {
     corner_search(B, lo, hi, boxes[hi], tol, found);
     corner_search(B, hi, lo, boxes[lo], tol, found);
   }
-  // Merge with the existing contacts (both sorted by key), keeping history.
+  // Merge with the existing contacts (both sorted by key), keeping history. First where each
+  // find's contact was, or, for a new one, its joint (chosen now: it may fail, and nothing is
+  // changed yet); then array by array, each old array freed as soon as its new one is built,
+  // so that a pass never holds two whole contact stores.
   Contacts& old = m.contacts;
-  Contacts next;
-  next.reserve(found.size());
+  constexpr uint32_t kNew = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> from(found.size(), kNew);
+  std::vector<std::pair<uint32_t, int>> fresh;  // joint and tag of each new contact, in order
   size_t j = 0;
   auto old_key = [&](size_t i) {
     const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
@@ -170,42 +178,63 @@ void detect_contacts(Model& m) {
     const auto key = std::make_tuple(f.lo, f.hi, f.owner, f.corner, f.slot);
     while (j < old.size() && old_key(j) < key) ++j;
     if (j < old.size() && old_key(j) == key) {
-      next.push_from(old, j);
-    } else {
-      // The joint tag of the face met (for a rounded corner, the later of its two edges).
-      const uint32_t e = f.hit.feature;
-      const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
-      const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
-      int tag = std::max(B.edge_tag[e], B.edge_tag[prev]);
-      if (f.hit.kind == kCornerEdge) {
-        // The face met, and the owner's edge that lies along it (a joint is tagged on either
-        // side, or only on the side a generator made).
-        const uint32_t o0 = B.vert_begin[f.owner], no = B.vertex_count(f.owner);
-        const uint32_t oprev = o0 + (f.corner - o0 + no - 1) % no;
-        const Vec2& u = B.world_edge_dir[e];
-        const bool in_along =
-            std::abs(B.world_edge_dir[oprev].dot(u)) >= std::abs(B.world_edge_dir[f.corner].dot(u));
-        tag = std::max(B.edge_tag[e], B.edge_tag[in_along ? oprev : f.corner]);
-      }
-      const int joint = m.joint_for(f.owner, f.other, tag);
-      if (joint < 0) {
-        throw ModelError("no joint properties apply to the contact between " +
-                         m.block_label(f.owner) + " and " + m.block_label(f.other) +
-                         ": use 'joint assign'");
-      }
-      next.push_new(f.owner, f.other, f.corner, f.slot, static_cast<uint32_t>(joint), tag);
-      const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
+      from[k] = static_cast<uint32_t>(j);
+      continue;
+    }
+    // The joint tag of the face met (for a rounded corner, the later of its two edges).
+    const uint32_t e = f.hit.feature;
+    const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
+    const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
+    int tag = std::max(B.edge_tag[e], B.edge_tag[prev]);
+    if (f.hit.kind == kCornerEdge) {
+      // The face met, and the owner's edge that lies along it (a joint is tagged on either
+      // side, or only on the side a generator made).
+      const uint32_t o0 = B.vert_begin[f.owner], no = B.vertex_count(f.owner);
+      const uint32_t oprev = o0 + (f.corner - o0 + no - 1) % no;
+      const Vec2& u = B.world_edge_dir[e];
+      const bool in_along =
+          std::abs(B.world_edge_dir[oprev].dot(u)) >= std::abs(B.world_edge_dir[f.corner].dot(u));
+      tag = std::max(B.edge_tag[e], B.edge_tag[in_along ? oprev : f.corner]);
+    }
+    const int joint = m.joint_for(f.owner, f.other, tag);
+    if (joint < 0) {
+      throw ModelError("no joint properties apply to the contact between " +
+                       m.block_label(f.owner) + " and " + m.block_label(f.other) +
+                       ": use 'joint assign'");
+    }
+    fresh.emplace_back(static_cast<uint32_t>(joint), tag);
+  }
+  const size_t count = found.size();
+  Contacts next;
+  Contacts::each_array(
+      [&](auto& to, auto& was) {
+        using T = typename std::decay_t<decltype(to)>::value_type;
+        if constexpr (std::is_arithmetic_v<T>)
+          to.assign(count, T(0));
+        else
+          to.assign(count, T::Zero());
+        for (size_t k = 0; k < count; ++k)
+          if (from[k] != kNew) to[k] = was[from[k]];
+        std::decay_t<decltype(was)>().swap(was);
+      },
+      next, old);
+  for (size_t k = 0, q = 0; k < count; ++k) {
+    const Found& f = found[k];
+    if (from[k] == kNew) {
+      // A new contact: who it joins and the joint it is on; no history (zeros).
+      next.a[k] = f.owner, next.b[k] = f.other, next.corner[k] = f.corner, next.slot[k] = f.slot;
+      next.joint[k] = fresh[q].first, next.tag[k] = fresh[q].second;
+      const JointProperties& jp = m.joints[fresh[q++].first];
       // Joints shut when the model is assembled are bonded (cohesion and tension act); a
       // contact open by more than round-off is a gap, not a joint.
       if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && f.hit.gap <= m.bond_gap())
-        next.flags.back() |= kBonded;
+        next.flags[k] |= kBonded;
     }
-    const size_t i = next.size() - 1;
-    next.kind[i] = f.hit.kind, next.feature[i] = f.hit.feature, next.gap[i] = f.hit.gap;
-    next.normal[i] = f.hit.normal, next.point[i] = f.hit.point, next.chord[i] = f.hit.chord;
+    next.kind[k] = f.hit.kind, next.feature[k] = f.hit.feature, next.gap[k] = f.hit.gap;
+    next.normal[k] = f.hit.normal, next.point[k] = f.hit.point, next.chord[k] = f.hit.chord;
     // Both contacts of a corner in a notch keep their own face.
     const bool notch = f.slot == 1 || (k + 1 < found.size() && found[k + 1].slot == 1);
-    next.flags[i] = static_cast<uint8_t>(notch ? next.flags[i] | kNotch : next.flags[i] & ~kNotch);
+    next.flags[k] = static_cast<uint8_t>(notch ? next.flags[k] | kNotch : next.flags[k] & ~kNotch);
   }
   // Interface ranges.
   next.pair_begin.assign(1, 0);

@@ -61,21 +61,21 @@ struct Contacts {
   size_t size() const { return a.size(); }
   size_t pair_count() const { return pair_begin.size() - 1; }
   void clear();
-  // Room for n contacts in every array (a detection pass knows how many it keeps: the arrays
-  // then hold no spare capacity from doubling).
-  void reserve(size_t n);
-  // Applies f to every per-contact array (not pair_begin).
+  // Applies f to every per-contact array (not pair_begin) of one or more stores at once:
+  // f(x.a, y.a), f(x.b, y.b), ...
+  template <class F, class... Cs>
+  static void each_array(F&& f, Cs&... c) {
+    f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
+    f(c.flags...), f(c.joint...), f(c.tag...), f(c.normal...), f(c.point...), f(c.gap...);
+    f(c.chord...), f(c.length...), f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...);
+    f(c.shear_disp...), f(c.closure...), f(c.force...), f(c.force_mag...);
+  }
   template <class F>
   void for_each_array(F&& f) {
-    f(a), f(b), f(corner), f(slot), f(kind), f(feature), f(flags), f(joint), f(tag);
-    f(normal), f(point), f(gap), f(chord), f(length);
-    f(fn), f(fs), f(un_prev), f(dilation), f(shear_disp), f(closure), f(force), f(force_mag);
+    each_array(f, *this);
   }
   // Appends a contact copied from another store (used when merging a detection pass).
   void push_from(const Contacts& src, size_t i);
-  // Appends a fresh contact with no history.
-  void push_new(uint32_t a_, uint32_t b_, uint32_t corner_, uint8_t slot_, uint32_t joint_,
-                int tag_);
 };
 
 }  // namespace tessera
