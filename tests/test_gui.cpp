@@ -103,6 +103,28 @@ bool open_fitted(MainWindow& w, const QString& path) {
   return true;
 }
 
+// The pixels of a frame's model area (right of the 3D triad, left of the colour bars) whose
+// colour passes a test.
+template <class Is>
+std::vector<QPoint> model_pixels(const QImage& img, Is is) {
+  std::vector<QPoint> at;
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = img.width() * 15 / 100; x < img.width() * 8 / 10; ++x)
+      if (is(img.pixelColor(x, y))) at.push_back({x, y});
+  return at;
+}
+
+// Blue-grey: the second group's colour (120,150,190), shaded.
+bool blue_grey(const QColor& c) {
+  return c.saturation() >= 40 && c.blue() > c.red() + 30;
+}
+
+// A wall with a block behind it (seen from the south, the wall hides it).
+const char* kWallAndHidden =
+    "dimension 3\nmaterial define rock density=2500\n"
+    "block box 0,20,0 10,22,10 material=rock group=wall\n"
+    "block box 4,24,4 5,25,5 material=rock group=hidden\n";
+
 bool close_to(QColor c, Rgb expected, int tol = 12) {
   return std::abs(c.red() - expected.r) <= tol && std::abs(c.green() - expected.g) <= tol &&
          std::abs(c.blue() - expected.b) <= tol;
@@ -439,15 +461,9 @@ class TestGui : public QObject {
     // Pixels of the second group's colour (120,150,190, shaded) among all coloured ones, left
     // of the colour bar and right of the triad.
     const auto shares = [](const QImage& img) {
-      long blue = 0, coloured = 0;
-      for (int y = 0; y < img.height(); ++y)
-        for (int x = img.width() * 15 / 100; x < img.width() * 8 / 10; ++x) {
-          const QColor c = img.pixelColor(x, y);
-          if (c.saturation() < 40) continue;
-          ++coloured;
-          blue += c.blue() > c.red() + 30;
-        }
-      return std::pair<long, long>{blue, coloured};
+      const auto count = [&](auto is) { return static_cast<long>(model_pixels(img, is).size()); };
+      return std::pair<long, long>{count(blue_grey),
+                                   count([](const QColor& c) { return c.saturation() >= 40; })};
     };
     const QString path = write_script(dir_, "depth3d.tess",
                                       "dimension 3\nmaterial define rock density=2500\n"
@@ -460,10 +476,7 @@ class TestGui : public QObject {
           model, 100.0 * double(brick) / double(model));
     QVERIFY(model > 5000);
     QVERIFY(std::abs(double(brick) / double(model) - 0.0301) < 0.15 * 0.0301);
-    const QString behind = write_script(dir_, "behind3d.tess",
-                                        "dimension 3\nmaterial define rock density=2500\n"
-                                        "block box 0,20,0 10,22,10 material=rock group=wall\n"
-                                        "block box 4,24,4 5,25,5 material=rock group=hidden\n");
+    const QString behind = write_script(dir_, "behind3d.tess", kWallAndHidden);
     MainWindow w2;
     QVERIFY(open_shown(w2, behind));
     ViewOptions o = w2.viewOptions();
@@ -484,10 +497,7 @@ class TestGui : public QObject {
   // too), the triad shows north, a cut plane opens the wall to what is behind it, and the
   // perspective switch keeps the model in view.
   void threeDCameraPicksAndCuts() {
-    const QString path = write_script(dir_, "cut3d.tess",
-                                      "dimension 3\nmaterial define rock density=2500\n"
-                                      "block box 0,20,0 10,22,10 material=rock group=wall\n"
-                                      "block box 4,24,4 5,25,5 material=rock group=hidden\n");
+    const QString path = write_script(dir_, "cut3d.tess", kWallAndHidden);
     MainWindow w;
     QVERIFY(open_shown(w, path));
     ViewOptions o = w.viewOptions();
@@ -507,16 +517,8 @@ class TestGui : public QObject {
     };
     const QImage before = w.view()->grabFramebuffer();
     QVERIFY(reds(before) > 20);
-    // The hidden block's pixels (blue-grey, right of the triad, left of the colour bar).
-    const auto hidden_pixels = [](const QImage& img) {
-      std::vector<QPoint> at;
-      for (int y = 0; y < img.height(); ++y)
-        for (int x = img.width() * 15 / 100; x < img.width() * 8 / 10; ++x) {
-          const QColor c = img.pixelColor(x, y);
-          if (c.saturation() >= 40 && c.blue() > c.red() + 30) at.push_back({x, y});
-        }
-      return at;
-    };
+    // The hidden block's pixels (blue-grey).
+    const auto hidden_pixels = [](const QImage& img) { return model_pixels(img, blue_grey); };
     QVERIFY(hidden_pixels(before).empty());
     QSignalSpy picks(w.view(), &VtkView::picked);
     const QPoint middle(w.view()->width() / 2 - w.view()->width() / 10, w.view()->height() / 2);
@@ -1005,10 +1007,8 @@ class TestGui : public QObject {
     w.view()->resetCamera();
     QTest::qWait(100);
     const QImage img = w.view()->grabFramebuffer();
-    std::vector<QPoint> zoned;
-    for (int y = 0; y < img.height(); ++y)
-      for (int x = img.width() * 15 / 100; x < img.width() * 78 / 100; ++x)
-        if (img.pixelColor(x, y).saturation() > 60) zoned.push_back(QPoint(x, y));
+    const std::vector<QPoint> zoned =
+        model_pixels(img, [](const QColor& c) { return c.saturation() > 60; });
     QVERIFY(zoned.size() > 500);
     QSignalSpy zones(w.view(), &VtkView::zonePicked);
     QTest::mouseClick(w.view(), Qt::LeftButton, {},
@@ -1088,11 +1088,9 @@ class TestGui : public QObject {
     QVERIFY(w.selectedBlocks().empty());
     QTest::qWait(50);
     const QImage img = w.view()->grabFramebuffer();
-    std::vector<QPoint> model;
-    for (int y = 0; y < img.height(); ++y)
-      for (int x = img.width() * 15 / 100; x < img.width() * 78 / 100; ++x)
-        if (const int l = img.pixelColor(x, y).lightness(); l > 100 && l < 245)
-          model.push_back(QPoint(x, y));  // the blocks' grey faces
+    const std::vector<QPoint> model = model_pixels(img, [](const QColor& c) {
+      return c.lightness() > 100 && c.lightness() < 245;  // the blocks' grey faces
+    });
     QVERIFY(model.size() > 1000);
     QTest::mouseClick(w.view(), Qt::LeftButton, {},
                       model[model.size() / 2] / img.devicePixelRatioF());

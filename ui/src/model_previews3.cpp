@@ -7,7 +7,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene3d.hpp"
 #include "tessera/core/model.hpp"
+#include "tessera/generation/cutting3.hpp"
 #include "tessera/generation/generators.hpp"
 #include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/main_window.hpp"
@@ -42,20 +44,17 @@ void add_loop(const std::vector<Vec3>& pts, Segments& out) {
   for (size_t k = 0; k < pts.size(); ++k) out.push_back({pts[k], pts[(k + 1) % pts.size()]});
 }
 
+// Corner i of a box (bits 1, 2, 4: x, y, z at their high end).
+Vec3 box_corner(const Vec3& lo, const Vec3& hi, int i) {
+  return {i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()};
+}
+
 void add_box(const Vec3& a, const Vec3& b, Segments& out) {
   const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-  const auto corner = [&](int i) {
-    return Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
-  };
+  const auto corner = [&](int i) { return box_corner(lo, hi, i); };
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4})
       if (!(i & bit)) out.push_back({corner(i), corner(i | bit)});
-}
-
-// The upward normal of a plane by dip and dip direction (degrees).
-Vec3 plane_normal(double dip, double ddir) {
-  const double d = dip * std::numbers::pi / 180, a = ddir * std::numbers::pi / 180;
-  return {std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), std::cos(d)};
 }
 
 // Two unit vectors across a direction.
@@ -66,9 +65,7 @@ void across(const Vec3& n, Vec3& e1, Vec3& e2) {
 // The plane n.x = c within the box, as its outline (empty if it misses the box).
 std::vector<Vec3> plane_in_box(const Vec3& n, double c, const Vec3& lo, const Vec3& hi) {
   std::vector<Vec3> pts;
-  const auto corner = [&](int i) {
-    return Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
-  };
+  const auto corner = [&](int i) { return box_corner(lo, hi, i); };
   for (int i = 0; i < 8; ++i)
     for (int bit : {1, 2, 4}) {
       if (i & bit) continue;
@@ -76,16 +73,7 @@ std::vector<Vec3> plane_in_box(const Vec3& n, double c, const Vec3& lo, const Ve
       const double da = n.dot(a) - c, db = n.dot(b) - c;
       if ((da <= 0 && db > 0) || (da > 0 && db <= 0)) pts.push_back(a + da / (da - db) * (b - a));
     }
-  if (pts.size() < 3) return {};
-  Vec3 mid = Vec3::Zero(), e1, e2;
-  for (const Vec3& p : pts) mid += p;
-  mid /= static_cast<double>(pts.size());
-  across(n, e1, e2);
-  std::sort(pts.begin(), pts.end(), [&](const Vec3& a, const Vec3& b) {
-    return std::atan2((a - mid).dot(e2), (a - mid).dot(e1)) <
-           std::atan2((b - mid).dot(e2), (b - mid).dot(e1));
-  });
-  return pts;
+  return polygon_about(n, pts);
 }
 
 // An opening's cross-section (2D, its arch up) placed across the axis at `at`: up is +z as
@@ -134,7 +122,7 @@ void MainWindow::preview3(const QString& name, const CommandDialog& d) {
   } else if ((name == "crack" || name == "jset") &&
              number(d.value("dip").section(',', 0, 0), dip) &&
              number(d.value("ddir").section(',', 0, 0), ddir)) {
-    const Vec3 n = plane_normal(dip, ddir);
+    const Vec3 n = normal_from_dip(dip, ddir);
     const bool through = point3(d.value("origin"), origin);
     if (name == "crack" && through && number(d.value("radius"), v) && v > 0) {
       // A disc: its rim.
@@ -153,8 +141,7 @@ void MainWindow::preview3(const QString& name, const CommandDialog& d) {
       // Planes S apart from the origin, across the box (at most 200).
       double from = 1e300, to = -1e300;
       for (int i = 0; i < 8; ++i) {
-        const double c =
-            n.dot(Vec3(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()));
+        const double c = n.dot(box_corner(lo, hi, i));
         from = std::min(from, c), to = std::max(to, c);
       }
       const double o = n.dot(origin);

@@ -5,21 +5,26 @@
 #include <cmath>
 #include <numbers>
 
+#include "tessera/generation/cutting3.hpp"
+
 namespace tessera::ui {
 
-ViewAxes::ViewAxes(const ViewOptions& o) {
-  const double a = o.azimuth * std::numbers::pi / 180, e = o.elevation * std::numbers::pi / 180;
+ViewAxes::ViewAxes(double azimuth, double elevation) {
+  const double a = azimuth * std::numbers::pi / 180, e = elevation * std::numbers::pi / 180;
   eye = Vec3(std::sin(a) * std::cos(e), std::cos(a) * std::cos(e), std::sin(e));
   right = Vec3(-std::cos(a), std::sin(a), 0.0);
   up = eye.cross(right);
 }
 
 namespace {
-// The cut's upward normal.
+// The cut's upward normal (the engine's rule for a plane by dip and dip direction).
 Vec3 cut_normal(const ViewOptions& o) {
-  const double dip = o.cut_dip * std::numbers::pi / 180,
-               dir = o.cut_dip_direction * std::numbers::pi / 180;
-  return {std::sin(dip) * std::sin(dir), std::sin(dip) * std::cos(dir), std::cos(dip)};
+  return normal_from_dip(o.cut_dip, o.cut_dip_direction);
+}
+
+// Where the segment a-b crosses the cut, if it does (signed heights da, db).
+void add_crossing(const Vec3& a, const Vec3& b, double da, double db, std::vector<Vec3>& out) {
+  if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
 }
 
 // A polygon's part below the cut (Sutherland-Hodgman against one plane).
@@ -30,15 +35,18 @@ void clip_below(const ViewOptions& o, const std::vector<Vec3>& in, std::vector<V
     const Vec3 &a = in[k], &b = in[(k + 1) % in.size()];
     const double da = n.dot(a - o.cut_point), db = n.dot(b - o.cut_point);
     if (da <= 0) out.push_back(a);
-    if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
+    add_crossing(a, b, da, db, out);
   }
 }
 
-// Points on the cut's plane as a polygon turned about its upward normal (convex sections:
-// a tetrahedron's, a convex block's).
-std::vector<Vec3> around_normal(const ViewOptions& o, std::vector<Vec3> pts) {
+Vec3 displacement(const SnapshotBlock& b) {
+  return {b.x - b.x_ref, b.y - b.y_ref, b.z - b.z_ref};
+}
+}  // namespace
+
+std::vector<Vec3> polygon_about(const Vec3& n, std::vector<Vec3> pts) {
   if (pts.size() < 3) return {};
-  const Vec3 n = cut_normal(o), t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
   Vec3 mid = Vec3::Zero();
   for (const Vec3& p : pts) mid += p;
   mid /= static_cast<double>(pts.size());
@@ -55,16 +63,6 @@ std::vector<Vec3> around_normal(const ViewOptions& o, std::vector<Vec3> pts) {
   while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-9 * size) out.pop_back();
   return out.size() >= 3 ? out : std::vector<Vec3>{};
 }
-
-// Where the segment a-b crosses the cut, if it does (signed distances da, db).
-void add_crossing(const Vec3& a, const Vec3& b, double da, double db, std::vector<Vec3>& out) {
-  if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
-}
-
-Vec3 displacement(const SnapshotBlock& b) {
-  return {b.x - b.x_ref, b.y - b.y_ref, b.z - b.z_ref};
-}
-}  // namespace
 
 bool cut_away(const ViewOptions& o, const Vec3& p) {
   return o.cut && cut_normal(o).dot(p - o.cut_point) > 0;
@@ -115,9 +113,9 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     };
     return Rgb{shade(base.r), shade(base.g), shade(base.b)};
   };
-  // A polygon of world points if it faces the viewer.
+  // A polygon of world points, if it faces the viewer or a camera or cut may show its inside
+  // (clipped by the cut unless it is a section lying on it).
   std::vector<Vec3> below;
-  // A polygon (clipped by the cut unless it is a section lying on it).
   const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline,
                         bool section = false, int zone = -1) {
     Vec3 n = Vec3::Zero();
@@ -155,12 +153,14 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   std::vector<double> block_lo(s.blocks.size(), 1e300), block_hi(s.blocks.size(), -1e300);
   std::vector<double> zone_lo, zone_hi;
   if (o.cut) {
-    for (const Snapshot::Face3& f : s.faces3)
+    for (const Snapshot::Face3& f : s.faces3) {
+      const Vec3 shift = face_shift(f);
+      const auto b = static_cast<size_t>(f.block);
       for (uint32_t k = f.begin; k < f.end; ++k) {
-        const double h = height(s.points3[k] + face_shift(f));
-        const auto b = static_cast<size_t>(f.block);
+        const double h = height(s.points3[k] + shift);
         block_lo[b] = std::min(block_lo[b], h), block_hi[b] = std::max(block_hi[b], h);
       }
+    }
     if (zone_colour && !s.tris3.empty()) {
       zone_lo.assign(s.zones.size(), 1e300), zone_hi.assign(s.zones.size(), -1e300);
       for (size_t z = 0; z < s.zones.size(); ++z)
@@ -208,7 +208,7 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
         if (d[a] == 0) section.push_back(c[a]);  // a corner on the plane
         for (int b = a + 1; b < 4; ++b) add_crossing(c[a], c[b], d[a], d[b], section);
       }
-      const std::vector<Vec3> cut = around_normal(o, section);
+      const std::vector<Vec3> cut = polygon_about(up, section);
       const std::optional<Rgb> colour = zone_colour(z);
       if (!cut.empty() && colour) show(cut, z.block, *colour, false, true, static_cast<int>(i));
     }
@@ -222,12 +222,13 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
     for (uint32_t k = face.begin; k < face.end; ++k) {
       const uint32_t next = k + 1 < face.end ? k + 1 : face.begin;
       const Vec3 a = s.points3[k] + shift, b = s.points3[next] + shift;
-      if (height(a) == 0) caps[blk].push_back(a);
-      add_crossing(a, b, height(a), height(b), caps[blk]);
+      const double ha = height(a);
+      if (ha == 0) caps[blk].push_back(a);
+      add_crossing(a, b, ha, height(b), caps[blk]);
     }
   }
   for (size_t b = 0; b < caps.size(); ++b)
-    if (const std::vector<Vec3> cap = around_normal(o, caps[b]); !cap.empty())
+    if (const std::vector<Vec3> cap = polygon_about(up, caps[b]); !cap.empty())
       show(cap, static_cast<int>(b), colours[b], true, true);
 }
 

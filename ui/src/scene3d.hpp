@@ -15,9 +15,14 @@ namespace tessera::ui {
 // The view's axes: right and up on the screen, and towards the viewer (the eye).
 struct ViewAxes {
   Vec3 right, up, eye;
-  explicit ViewAxes(const ViewOptions& o);
+  ViewAxes(double azimuth, double elevation);  // degrees
+  explicit ViewAxes(const ViewOptions& o) : ViewAxes(o.azimuth, o.elevation) {}
   Vec2 operator()(const Vec3& p) const { return {p.dot(right), p.dot(up)}; }
 };
+
+// Points on a plane of normal n (the crossings of a convex polygon or polyhedron with it) as a
+// polygon turned about n, each point once; empty if fewer than three remain.
+std::vector<Vec3> polygon_about(const Vec3& n, std::vector<Vec3> pts);
 
 // Whether a point is cut away by the view's cut (ViewOptions::cut): it lies above the plane.
 bool cut_away(const ViewOptions& o, const Vec3& p);

@@ -24,12 +24,6 @@
 namespace tessera::ui {
 
 namespace {
-ViewAxes axes_of(double azimuth, double elevation) {
-  ViewOptions o;
-  o.azimuth = azimuth, o.elevation = elevation;
-  return ViewAxes(o);
-}
-
 void move_camera(vtkCamera* cam, const Vec3& shift) {
   double f[3], p[3];
   cam->GetFocalPoint(f), cam->GetPosition(p);
@@ -90,7 +84,7 @@ double VtkView::worldPerPixel() {
 
 void VtkView::aimCamera() {
   vtkCamera* cam = renderer_->GetActiveCamera();
-  const ViewAxes v = axes_of(azimuth_, elevation_);
+  const ViewAxes v = ViewAxes(azimuth_, elevation_);
   double f[3];
   cam->GetFocalPoint(f);
   const Vec3 at = Vec3(f[0], f[1], f[2]) + cam->GetDistance() * v.eye;
@@ -107,7 +101,7 @@ void VtkView::resetCamera3() {
   const Vec3 centre = 0.5 * (lo + hi);
   const double radius = std::max(0.5 * (hi - lo).norm(), 1e-9);
   // The scale that fits the projected model in the model's viewport.
-  const ViewAxes v = axes_of(azimuth_, elevation_);
+  const ViewAxes v = ViewAxes(azimuth_, elevation_);
   double half_w = 1e-9, half_h = 1e-9;
   for (const auto& p : scene_.polygons)
     for (const Vec3& w : p.world) {
@@ -133,7 +127,7 @@ void VtkView::resetCamera3() {
 }
 
 void VtkView::pan3(QPoint from, QPoint to) {
-  const ViewAxes v = axes_of(azimuth_, elevation_);
+  const ViewAxes v = ViewAxes(azimuth_, elevation_);
   const QPoint d = to - from;
   move_camera(renderer_->GetActiveCamera(), worldPerPixel() * (-d.x() * v.right + d.y() * v.up));
   renderer_->ResetCameraClippingRange();
@@ -141,7 +135,7 @@ void VtkView::pan3(QPoint from, QPoint to) {
 
 void VtkView::zoom3(QPoint at, double factor) {
   vtkCamera* cam = renderer_->GetActiveCamera();
-  const ViewAxes v = axes_of(azimuth_, elevation_);
+  const ViewAxes v = ViewAxes(azimuth_, elevation_);
   // The cursor's offset from the viewport's centre: the model point there stays put.
   const double cx = width() * 0.5 * (kModelViewport[0] + kModelViewport[2]),
                cy = height() * (1 - 0.5 * (kModelViewport[1] + kModelViewport[3]));
@@ -219,7 +213,7 @@ void VtkView::visibleWindow3(Vec2& lo, Vec2& hi) {
   // The camera's window in the figures' view coordinates (right and up of the same view).
   double f[3];
   renderer_->GetActiveCamera()->GetFocalPoint(f);
-  const Vec2 centre = axes_of(azimuth_, elevation_)(Vec3(f[0], f[1], f[2]));
+  const Vec2 centre = ViewAxes(azimuth_, elevation_)(Vec3(f[0], f[1], f[2]));
   const double wpp = worldPerPixel();
   const Vec2 half(0.5 * wpp * width() * (kModelViewport[2] - kModelViewport[0]),
                   0.5 * wpp * height() * (kModelViewport[3] - kModelViewport[1]));
