@@ -252,6 +252,13 @@ class TestScriptErrors : public QObject {
     QVERIFY(has(error_of(blk + "figure a.png window=1,1,0,0"), "second corner"));
     QVERIFY(has(error_of(blk + "figure a.png size=4,4"), "between 16 and 16384"));
     QVERIFY(has(error_of(blk + "figure a.png"), "this run has no renderer"));
+    // A cut is for 3D models, as five numbers, with a dip from 0 to 90 degrees.
+    QVERIFY(has(error_of(blk + "figure a.png cut=90,0,0,0,0"), "test:5: cut= cuts 3D models"));
+    const std::string box =
+        "dimension 3\nmaterial define rock density=2500\nblock box 0,0,0 1,1,1 material=rock\n";
+    QVERIFY(has(error_of(box + "figure a.png cut=90,0,0.5"), "test:4: write cut=DIP,DIPDIR,X,Y,Z"));
+    QVERIFY(has(error_of(box + "figure a.png cut=120,0,0,0,0"), "between 0 and 90 degrees"));
+    QVERIFY(has(error_of(box + "figure a.png cut=90,east,0,0,0"), "test:4:"));
     // With a renderer, it gets the request as written.
     ScriptRun r;
     FigureRequest got;
