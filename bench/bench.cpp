@@ -63,6 +63,27 @@ Model wall3d_scene(int cols, int rows) {
   return m;
 }
 
+// A block's centroid height (y in 2D, z in 3D).
+double height(const Model& m, size_t b) {
+  return m.dim == 3 ? m.blocks3.body[b].position.z() : m.blocks.y[b];
+}
+
+// The blocks of the wall's top course (centroids within half a course of the highest).
+std::vector<size_t> top_course(const Model& m) {
+  double highest = -1e300;
+  for (size_t b = 0; b < m.block_count(); ++b) highest = std::max(highest, height(m, b));
+  std::vector<size_t> top;
+  for (size_t b = 0; b < m.block_count(); ++b)
+    if (height(m, b) > highest - 0.5) top.push_back(b);
+  return top;
+}
+
+double mean_height(const Model& m, const std::vector<size_t>& blocks) {
+  double sum = 0.0;
+  for (size_t b : blocks) sum += height(m, b);
+  return sum / static_cast<double>(blocks.size());
+}
+
 // Elastic rock (density 2500, E 10 GPa, nu 0.25) settling under gravity on rollers: the zone
 // kernel alone (no contacts). zones2d: a 20 x 40 m plane-strain panel of triangles; column3d:
 // a 4 x 4 x 16 m column of tetrahedra. `edge` is the zone size.
@@ -140,7 +161,19 @@ int main(int argc, char** argv) {
   app.add_option("--cycles", cycles, "Cycles to run");
   app.add_option("--solve", ratio, "Instead of --cycles, solve to this unbalanced-force ratio");
   app.add_option("--threads", threads, "Worker threads")->check(CLI::PositiveNumber);
-  bool kernel = false;
+  bool kernel = false, scaled = false;
+  uint64_t trace = 0;
+  std::string damping = "local";
+  double alpha = -1.0;
+  app.add_option("--trace", trace,
+                 "--solve: print the cycle, the ratio and the top course's settlement every N "
+                 "cycles to stderr");
+  app.add_option("--damping", damping, "local (alpha 0.8) or kinetic (alpha 0.2)")
+      ->check(CLI::IsMember({"local", "kinetic"}));
+  app.add_option("--alpha", alpha, "The damping's alpha instead of its default")
+      ->check(CLI::Range(0.0, 0.999));
+  app.add_flag("--scaled", scaled,
+               "Density scaling of the blocks (the script's 'timestep scaled'), for --solve");
   app.add_flag("--kernel", kernel,
                "wall: also run the speed-of-light kernel (bench/kernel.hpp) on the same blocks and "
                "contacts for as many cycles, and report Tessera's time as a ratio to it");
@@ -152,7 +185,12 @@ int main(int argc, char** argv) {
   Profile profile;
   m.options.profile = &profile;
   m.options.validate = false;
+  m.settings.dt_scaled = scaled;
+  if (damping == "kinetic") m.settings.damping = DampingMode::kKinetic;
+  if (alpha >= 0.0) m.settings.local_alpha = m.settings.kinetic_alpha = alpha;
   prepare(m);
+  const std::vector<size_t> top = top_course(m);
+  const double top_before = mean_height(m, top);
   if (m.dim == 3)
     detect_contacts3(m);
   else
@@ -162,7 +200,11 @@ int main(int argc, char** argv) {
   uint64_t ran = 0;
   bool converged = false;
   if (ratio > 0.0) {
-    const SolveResult r = solve(m, ratio, 10'000'000);
+    const Progress show = [&](const Model& mm) {
+      std::cerr << mm.cycle << " " << mm.ratio << " " << top_before - mean_height(mm, top) << "\n";
+      return true;
+    };
+    const SolveResult r = solve(m, ratio, 10'000'000, trace ? show : Progress{}, trace);
     ran = r.cycles, converged = r.converged;
   } else {
     ran = run_cycles(m, cycles);
@@ -196,10 +238,13 @@ int main(int argc, char** argv) {
              "\"contacts\": {}, \"sub_contacts\": {}, \"cycles\": {}, \"seconds\": {:.4f}, "
              "\"ms_per_cycle\": {:.4f}, \"cycles_per_s\": {:.1f}, \"contact_updates_per_s\": "
              "{:.4g}, \"ratio\": {:.3e}, "
-             "\"converged\": {}, \"detection_passes\": {}, \"stages\": {{{}}}{}}}",
+             "\"converged\": {}, \"damping\": \"{}\", \"scaled\": {}, \"top_settlement_m\": "
+             "{:.6e}, \"dt\": {:.4e}, "
+             "\"detection_passes\": {}, \"stages\": {{{}}}{}}}",
              scene, cols, rows, threads, m.block_count(), contacts, m.dim == 3 ? updates : 0, ran,
              seconds, 1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(updates) / per_cycle,
-             m.ratio, converged ? "true" : "false", m.detection_passes, stages, versus)
+             m.ratio, converged ? "true" : "false", damping, scaled ? "true" : "false",
+             top_before - mean_height(m, top), m.dt, m.detection_passes, stages, versus)
       << std::endl;
   return 0;
 }

@@ -68,8 +68,9 @@ class TestCore : public QObject {
   Q_OBJECT
  private slots:
   // Fixed: the user's step exactly. Auto: the safety factor times the rigid block's translation
-  // bound 2 sqrt(m / (k S)) or less (S the perimeter or surface). Scaled (density scaling of
-  // zones) leaves a rigid model's step as auto.
+  // bound 2 sqrt(m / (k S)) or less (S the perimeter or surface). Scaled (density scaling): the
+  // median of the block's own steps in translation and rotation - its translation bound - with
+  // the rotation's inertia raised by the square of the two steps' ratio.
   void timestepPolicies_data() { dimensions(); }
   void timestepPolicies() {
     QFETCH(bool, three);
@@ -85,7 +86,14 @@ class TestCore : public QObject {
     QVERIFY(automatic.model().dt <= bound * (1 + 1e-12));
     QVERIFY(automatic.model().dt > 0.2 * bound);
     QCOMPARE(automatic.model().dt, compute_timestep(automatic.model()));
-    QCOMPARE(scaled.model().dt, automatic.model().dt);
+    const Model& sm = scaled.model();
+    qInfo("scaled step %.4e s, inertia scales %.4f %.4f", sm.dt, sm.block_scale[1][0],
+          sm.block_scale[1][1]);
+    QVERIFY(std::abs(sm.dt - bound) < 1e-12 * bound);
+    QVERIFY(sm.dt > automatic.model().dt * 1.2);
+    QCOMPARE(sm.block_scale[1][0], 1.0);
+    QVERIFY(sm.block_scale[1][1] > 1.5);
+    QVERIFY(automatic.model().block_scale.empty());
     QCOMPARE(stiffest_joint(automatic.model()), kKn);
   }
 
@@ -94,7 +102,7 @@ class TestCore : public QObject {
   void dampingSettlesOnTheJoint_data() {
     QTest::addColumn<bool>("three");
     QTest::addColumn<QString>("mode");
-    for (const char* mode : {"local", "global", "none"}) {
+    for (const char* mode : {"local", "kinetic", "global", "none"}) {
       QTest::newRow(qPrintable(QString("2D ") + mode)) << false << QString(mode);
       QTest::newRow(qPrintable(QString("3D ") + mode)) << true << QString(mode);
     }

@@ -126,6 +126,7 @@ class TestDynamics : public QObject {
     QTest::addColumn<QString>("mode");
     QTest::newRow("local") << "local 0.8";
     QTest::newRow("adaptive global") << "global 0.5";
+    QTest::newRow("kinetic") << "kinetic 0.2";
   }
   void dampingModesReachTheStaticSettlement() {
     QFETCH(QString, mode);

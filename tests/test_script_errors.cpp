@@ -40,6 +40,13 @@ class TestScriptErrors : public QObject {
     const auto e = error_of("round 0.01\nstpe 10");
     QVERIFY(has(e, "test:2: unknown command 'stpe' (did you mean 'step'?)"));
   }
+  void badDampingIsNamed() {
+    QVERIFY(has(error_of("round 0.01\ndamping kinetik"),
+                "test:2: 'kinetik' is not a damping mode (did you mean 'kinetic'?)"));
+    QVERIFY(
+        has(error_of("damping kinetic 1.5"), "test:1: kinetic damping's alpha must be in [0, 1)"));
+    QVERIFY(has(error_of("damping kinetic 0.2 0.3"), "unexpected word '0.3'"));
+  }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
     QVERIFY(has(e, "test:1:"));

@@ -138,9 +138,11 @@ DialogSpec spec(const QString& name) {
     return {"Damping",
             "damping",
             {{"#mode", "Kind", "", "local",
-              "local (static), global (adaptive viscous) or none (dynamic analysis)"},
+              "local or kinetic (static; kinetic is fastest), global (adaptive viscous) or none "
+              "(dynamic analysis)"},
              {"#value", "Alpha or ratio", "", "",
-              "local: alpha (default 0.8); global: the power ratio removed (0.5)"}}};
+              "local: alpha (default 0.8); kinetic: alpha (0.2); global: the power ratio removed "
+              "(0.5)"}}};
   if (name == "assign")
     return {"Assign to the selection",
             "",

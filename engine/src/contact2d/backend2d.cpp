@@ -49,6 +49,22 @@ void resultants2d(Model& m) {
   });
 }
 
+// Twice the kinetic energy over free degrees of freedom, with the density-scaled inertia.
+double motion_energy2d(const Model& m) {
+  const Blocks& B = m.blocks;
+  const auto& S = m.block_scale;
+  return deterministic_sum(B.size(), [&](size_t b) {
+    const uint8_t fix = B.fixity[b];
+    const double st = S.empty() ? 1.0 : S[b][0], sr = S.empty() ? 1.0 : S[b][1];
+    double k = 0.0;
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) k += st * B.mass[b] * B.vx[b] * B.vx[b];
+    if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) k += st * B.mass[b] * B.vy[b] * B.vy[b];
+    if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot))
+      k += sr * B.inertia[b] * B.omega[b] * B.omega[b];
+    return k;
+  });
+}
+
 // Power of the unbalanced forces and twice the kinetic energy, over free degrees of freedom.
 Power power2d(const Model& m) {
   const Blocks& B = m.blocks;
@@ -61,21 +77,23 @@ Power power2d(const Model& m) {
     if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) w += std::abs(B.moment[b] * B.omega[b]);
     return w;
   });
-  p.kin2 = deterministic_sum(B.size(), [&](size_t b) {
-    const uint8_t fix = B.fixity[b];
-    double k = 0.0;
-    if (B.inv_mass[b] > 0.0 && !(fix & kFixX)) k += B.mass[b] * B.vx[b] * B.vx[b];
-    if (B.inv_mass[b] > 0.0 && !(fix & kFixY)) k += B.mass[b] * B.vy[b] * B.vy[b];
-    if (B.inv_inertia[b] > 0.0 && !(fix & kFixRot)) k += B.inertia[b] * B.omega[b] * B.omega[b];
-    return k;
-  });
+  p.kin2 = motion_energy2d(m);
   return p;
 }
 
-// Damping and integration, one degree of freedom at a time.
+void stop2d(Model& m) {
+  Blocks& B = m.blocks;
+  std::fill(B.vx.begin(), B.vx.end(), 0.0);
+  std::fill(B.vy.begin(), B.vy.end(), 0.0);
+  std::fill(B.omega.begin(), B.omega.end(), 0.0);
+}
+
+// Damping and integration, one degree of freedom at a time (under density scaling with the
+// scaled mass and moment of inertia).
 void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
   Blocks& B = m.blocks;
   const double dt = m.dt;
+  const auto& S = m.block_scale;
   out.reset(B.size());
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
@@ -91,11 +109,13 @@ void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
         const double fd = locally_damped(f, v, d.alpha) - d.viscosity * mass * v;
         v += dt * fd * inv_m;
       };
-      advance(B.fx[b], B.vx[b], B.inv_mass[b], B.mass[b], fix & kFixX, B.fixed_vx[b]);
-      advance(B.fy[b], B.vy[b], B.inv_mass[b], B.mass[b], fix & kFixY, B.fixed_vy[b]);
+      double inv_m = B.inv_mass[b], mass = B.mass[b];
+      double inv_i = B.inv_inertia[b], inertia = B.inertia[b];
+      if (!S.empty()) inv_m /= S[b][0], mass *= S[b][0], inv_i /= S[b][1], inertia *= S[b][1];
+      advance(B.fx[b], B.vx[b], inv_m, mass, fix & kFixX, B.fixed_vx[b]);
+      advance(B.fy[b], B.vy[b], inv_m, mass, fix & kFixY, B.fixed_vy[b]);
       const double ub_force = ub2;
-      advance(B.moment[b], B.omega[b], B.inv_inertia[b], B.inertia[b], fix & kFixRot,
-              B.fixed_omega[b]);
+      advance(B.moment[b], B.omega[b], inv_i, inertia, fix & kFixRot, B.fixed_omega[b]);
       out.unbalanced[b] = std::sqrt(ub_force);
       out.moves[b] = B.inv_mass[b] > 0.0 && (fix & (kFixX | kFixY)) != (kFixX | kFixY);
       out.applied[b] = out.moves[b] ? B.applied[b] : 0.0;
@@ -116,18 +136,18 @@ void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
 }
 
 // Each block: the joint length in touch is at most its perimeter, at most bound_radius away.
-double timestep2d(const Model& m, double k) {
+std::vector<std::array<double, 2>> block_steps2d(const Model& m, double k) {
   const Blocks& B = m.blocks;
-  double dt = std::numeric_limits<double>::infinity();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 2>> steps(B.size(), {kInf, kInf});
   for (size_t b = 0; b < B.size(); ++b) {
     if (B.fixity[b] == kFixAll || k <= 0.0) continue;
     const double kb = k * B.perimeter[b];
-    if (B.inv_mass[b] > 0.0) dt = std::min(dt, 2.0 * std::sqrt(B.mass[b] / kb));
+    if (B.inv_mass[b] > 0.0) steps[b][0] = 2.0 * std::sqrt(B.mass[b] / kb);
     if (B.inv_inertia[b] > 0.0)
-      dt = std::min(dt,
-                    2.0 * std::sqrt(B.inertia[b] / (kb * B.bound_radius[b] * B.bound_radius[b])));
+      steps[b][1] = 2.0 * std::sqrt(B.inertia[b] / (kb * B.bound_radius[b] * B.bound_radius[b]));
   }
-  return dt;
+  return steps;
 }
 
 double kinetic_energy2d(const Model& m) {
@@ -147,8 +167,10 @@ const Backend& backend2d() {
                           .joint_forces = update_interfaces,
                           .resultants = resultants2d,
                           .power = power2d,
+                          .motion_energy = motion_energy2d,
+                          .stop = stop2d,
                           .integrate = integrate2d,
-                          .timestep = timestep2d,
+                          .block_steps = block_steps2d,
                           .kinetic_energy = kinetic_energy2d,
                           .find_overlap = find_overlap2d,
                           .validate = validate2d};

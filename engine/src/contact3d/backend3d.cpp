@@ -108,6 +108,18 @@ void resultants3d(Model& m) {
 }
 
 // As in 2D, on translation and rotation.
+double motion_energy3d(const Model& m) {
+  const Blocks3& B = m.blocks3;
+  const auto& S = m.block_scale;
+  return deterministic_sum(B.size(), [&](size_t b) {
+    const RigidBody3& body = B.body[b];
+    if (B.fixity[b] == kFix3All || body.mass <= 0.0) return 0.0;
+    if (S.empty()) return 2.0 * body.kinetic_energy();
+    return S[b][0] * body.mass * body.velocity.squaredNorm() +
+           S[b][1] * body.momentum.dot(body.angular_velocity());
+  });
+}
+
 Power power3d(const Model& m) {
   const Blocks3& B = m.blocks3;
   Power p;
@@ -116,11 +128,15 @@ Power power3d(const Model& m) {
     return B.force[b].cwiseProduct(B.body[b].velocity).cwiseAbs().sum() +
            B.torque[b].cwiseProduct(B.body[b].angular_velocity()).cwiseAbs().sum();
   });
-  p.kin2 = deterministic_sum(B.size(), [&](size_t b) {
-    if (B.fixity[b] == kFix3All || B.body[b].mass <= 0.0) return 0.0;
-    return 2.0 * B.body[b].kinetic_energy();
-  });
+  p.kin2 = motion_energy3d(m);
   return p;
+}
+
+void stop3d(Model& m) {
+  Blocks3& B = m.blocks3;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (!B.deformable[b])
+      B.body[b].velocity.setZero(), B.body[b].momentum.setZero(), B.omega[b].setZero();
 }
 
 // An upper bound of the rotation angle between two orientations (2 asin s <= pi s, with s the
@@ -132,6 +148,7 @@ double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
 void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   Blocks3& B = m.blocks3;
   const double dt = m.dt;
+  const auto& S = m.block_scale;
   const size_t n = B.size();
   out.reset(n);
   parallel_for(n, [&](size_t b0, size_t b1) {
@@ -163,8 +180,12 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
           f[k] = locally_damped(f[k], v[k], d.alpha);
           t[k] = locally_damped(t[k], w[k], d.alpha);
         }
-        f -= d.viscosity * body.mass * v;
-        t -= d.viscosity * body.momentum;
+        // Density scaling: the scaled mass and moments of inertia take the forces (the body's
+        // momentum stays the real inertia times the spin).
+        const double st = S.empty() ? 1.0 : S[b][0], sr = S.empty() ? 1.0 : S[b][1];
+        f -= d.viscosity * (body.mass * st) * v;
+        t -= d.viscosity * sr * body.momentum;
+        if (!S.empty()) f /= st, t /= sr;
         // Fixed components: no force, the prescribed velocity.
         for (int k = 0; k < 3; ++k)
           if (fix & (1 << k)) f[k] = 0.0, body.velocity[k] = B.fixed_v[b][k];
@@ -188,19 +209,20 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
 
 // Each body: the joint area in touch is at most its surface (all its pieces'), at most
 // bound_radius away.
-double timestep3d(const Model& m, double k) {
+std::vector<std::array<double, 2>> block_steps3d(const Model& m, double k) {
   const Blocks3& B = m.blocks3;
-  double dt = std::numeric_limits<double>::infinity();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 2>> steps(B.size(), {kInf, kInf});
   std::vector<double> surface(B.size(), 0.0);
   for (size_t b = 0; b < B.size(); ++b) surface[static_cast<size_t>(B.master[b])] += B.surface[b];
   for (size_t b = 0; b < B.size(); ++b) {
     if (B.fixity[b] == kFix3All || k <= 0.0 || B.body[b].mass <= 0.0 || B.is_slave(b)) continue;
     const double kb = k * surface[b];
     const double r = B.bound_radius[b];
-    dt = std::min(dt, 2.0 * std::sqrt(B.body[b].mass / kb));
-    dt = std::min(dt, 2.0 * std::sqrt(B.body[b].principal.minCoeff() / (kb * r * r)));
+    steps[b][0] = 2.0 * std::sqrt(B.body[b].mass / kb);
+    steps[b][1] = 2.0 * std::sqrt(B.body[b].principal.minCoeff() / (kb * r * r));
   }
-  return dt;
+  return steps;
 }
 
 double kinetic_energy3d(const Model& m) {
@@ -219,8 +241,10 @@ const Backend& backend3d() {
                           .joint_forces = joint_forces3d,
                           .resultants = resultants3d,
                           .power = power3d,
+                          .motion_energy = motion_energy3d,
+                          .stop = stop3d,
                           .integrate = integrate3d,
-                          .timestep = timestep3d,
+                          .block_steps = block_steps3d,
                           .kinetic_energy = kinetic_energy3d,
                           .find_overlap = find_overlap3,
                           .validate = validate3d};

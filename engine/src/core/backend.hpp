@@ -2,6 +2,7 @@
 // forces, and rigid-body motion with 3 (2D) or 6 (3D) degrees of freedom. Internal to the engine.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <limits>
@@ -62,10 +63,16 @@ struct Backend {
   // Each block's resultant force and moment and the load it carries.
   void (*resultants)(Model& m);
   Power (*power)(const Model& m);
+  // Twice the kinetic energy of the rigid blocks' motion (with the density-scaled inertia).
+  double (*motion_energy)(const Model& m);
+  // Sets every rigid block's velocity and spin to zero (kinetic damping; held blocks take
+  // their prescribed velocities again when they move).
+  void (*stop)(Model& m);
   // Damping and central-difference integration of every rigid block.
   void (*integrate)(Model& m, const Damping& d, BlockMotion& out);
-  // Stable step of the rigid blocks on joints of stiffness k (Pa/m); infinity if none moves.
-  double (*timestep)(const Model& m, double k);
+  // Each block's own stable step on joints of stiffness k (Pa/m), in translation and in rotation
+  // (infinity where it does not move that way).
+  std::vector<std::array<double, 2>> (*block_steps)(const Model& m, double k);
   double (*kinetic_energy)(const Model& m);
   std::string (*find_overlap)(const Model& m);
   void (*validate)(const Model& m);

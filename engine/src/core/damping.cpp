@@ -21,7 +21,9 @@ Damping cycle_damping(Model& m, double power, double kin2) {
         m.global_c <= 0.0 ? target : std::clamp(target, m.global_c / 1.25, m.global_c * 1.25);
   }
   Damping d;
-  d.alpha = s.damping == DampingMode::kLocal ? s.local_alpha : 0.0;
+  d.alpha = s.damping == DampingMode::kLocal     ? s.local_alpha
+            : s.damping == DampingMode::kKinetic ? s.kinetic_alpha
+                                                 : 0.0;
   d.viscosity = s.damping == DampingMode::kAdaptiveGlobal ? m.global_c : 0.0;
   return d;
 }

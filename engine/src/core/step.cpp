@@ -43,15 +43,28 @@ void measure_motion(Model& m, const BlockMotion& bm, const ZoneMotion& zm) {
     throw_diverged(m, m.dim == 3 ? m.blocks3.id[worst] : m.blocks.id[worst]);
 }
 
+// Kinetic damping: once the kinetic energy of the whole model has passed a peak, every block and
+// node stops where it is, and the motion starts again from rest under the unbalanced forces.
+void kinetic_damping(Model& m) {
+  const Backend& be = backend(m);
+  const double e = be.motion_energy(m) + twice_node_energy(m);
+  if (e < m.kinetic_last) {
+    be.stop(m);
+    stop_nodes(m);
+    m.kinetic_last = 0.0;
+  } else {
+    m.kinetic_last = e;
+  }
+}
+
 }  // namespace
 
 void prepare(Model& m) {
   const Backend& be = backend(m);
   if (m.block_count() == 0) throw ModelError("the model has no blocks");
   be.prepare(m);
-  if (m.dt_dirty) {
-    scale_node_inertia(m);
-    m.dt = compute_timestep(m);
+  if (m.dt_dirty || (!m.block_scale.empty() && m.block_scale.size() != m.block_count())) {
+    set_timestep(m);
     m.dt_dirty = false;
   }
 }
@@ -84,6 +97,7 @@ void step(Model& m) {
   {
     StageTimer t(run, kStageZones);
     zones = zone_stage(m, damping);
+    if (m.settings.damping == DampingMode::kKinetic) kinetic_damping(m);
   }
   measure_motion(m, motion, zones);
   if (run.validate) be.validate(m);

@@ -240,6 +240,8 @@ void check_rest(Checker& c, const Model& m) {
   c.require(m.det_x.empty() || m.det_x.size() == m.blocks.size(), "Verlet references differ");
   c.require(m.det_pos3.empty() || m.det_pos3.size() == m.blocks3.size(),
             "3D Verlet references differ");
+  c.require(m.block_scale.empty() || m.block_scale.size() == m.block_count(),
+            "block density scales differ from the blocks");
 }
 
 }  // namespace

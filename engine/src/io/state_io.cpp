@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 10;
+constexpr uint32_t kVersion = 11;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -139,7 +139,7 @@ void fields(IO& io, auto& m) {
   auto& S = m.settings;
   io.pod(S.gravity.x()), io.pod(S.gravity.y()), io.pod(S.rounding), io.pod(S.contact_tolerance);
   io.pod(S.damping), io.pod(S.local_alpha), io.pod(S.global_ratio), io.pod(S.dt_safety);
-  io.pod(S.dt_fixed), io.pod(S.dt_scaled);
+  io.pod(S.dt_fixed), io.pod(S.dt_scaled), io.pod(S.kinetic_alpha);
   auto& B = m.blocks;
   for (auto* v : B.block_doubles()) io.vec(*v);
   io.vec(B.arc_radius), io.vec(B.round_length);
@@ -189,6 +189,7 @@ void fields(IO& io, auto& m) {
     io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label), io.pod(s.zone);
   io.vec(H.cycles), io.vec(H.values);
   io.pod(m.cycle), io.pod(m.time), io.pod(m.dt), io.pod(m.dt_dirty), io.pod(m.global_c);
+  io.vec(m.block_scale), io.pod(m.kinetic_last);
   io.pod(m.max_unbalanced), io.pod(m.mean_applied), io.pod(m.ratio);
   io.vec(m.det_x), io.vec(m.det_y), io.vec(m.det_theta), io.pod(m.detection_due);
   io.pod(m.detection_passes);

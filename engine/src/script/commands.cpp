@@ -423,7 +423,9 @@ void Interpreter::cmd_gravity(Args& a) {
 
 void Interpreter::cmd_damping(Args& a) {
   if (a.words.empty())
-    fail("write 'damping local [ALPHA]', 'damping global [RATIO]' or 'damping none'");
+    fail(
+        "write 'damping local [ALPHA]', 'damping kinetic [ALPHA]', 'damping global [RATIO]' or "
+        "'damping none'");
   Settings& s = model_.settings;
   const std::string& mode = a.words[0];
   if (a.words.size() > 2) fail("unexpected word '" + a.words[2] + "'");
@@ -437,11 +439,17 @@ void Interpreter::cmd_damping(Args& a) {
     if (has) s.global_ratio = num(a.words[1]);
     if (s.global_ratio <= 0.0 || s.global_ratio >= 1.0)
       fail("the global damping ratio must be in (0, 1)");
+  } else if (mode == "kinetic") {
+    s.damping = DampingMode::kKinetic;
+    if (has) s.kinetic_alpha = num(a.words[1]);
+    if (s.kinetic_alpha < 0.0 || s.kinetic_alpha >= 1.0)
+      fail("kinetic damping's alpha must be in [0, 1)");
   } else if (mode == "none") {
     if (has) fail("'damping none' takes no value");
     s.damping = DampingMode::kNone;
   } else {
-    fail("'" + mode + "' is not a damping mode" + suggest(mode, {"local", "global", "none"}));
+    fail("'" + mode + "' is not a damping mode" +
+         suggest(mode, {"local", "kinetic", "global", "none"}));
   }
 }
 

@@ -269,7 +269,7 @@ namespace {
 // the outline (normal and shear springs together), counted four times: a node bears its own
 // contact and the other side's contact on its edges, and the two nodes move against each other
 // (a corner node at a joint junction flip-flopped every cycle with the count of one).
-std::vector<double> node_timesteps(const Model& m) {
+std::vector<double> node_timesteps2(const Model& m) {
   const Continuum& c = m.continuum;
   std::vector<double> dt = node_steps(c);
   const double kmax = stiffest_joint_pair(m);
@@ -286,39 +286,11 @@ std::vector<double> node_timesteps(const Model& m) {
   return dt;
 }
 
-// The step of the deformable blocks from the nodes' own: the smallest, or under density
-// scaling the median over the nodes with mass.
-double pick_step(const Model& m, std::vector<double> steps) {
-  std::erase_if(steps, [](double s) { return s >= 1e300; });
-  if (steps.empty()) return 1e300;
-  if (!m.settings.dt_scaled) return *std::min_element(steps.begin(), steps.end());
-  const auto mid = steps.begin() + static_cast<long>(steps.size() / 2);
-  std::nth_element(steps.begin(), mid, steps.end());
-  return *mid;
-}
 }  // namespace
 
-double deformable_timestep(const Model& m) {
-  if (m.dim == 3) return m.continuum3.zone_count() ? pick_step(m, node_timesteps3(m)) : 1e300;
-  if (m.continuum.zone_count() == 0) return 1e300;
-  return pick_step(m, node_timesteps(m));
-}
-
-namespace {
-template <int D>
-void scale_inertia(const Model& m, ContinuumT<D>& c, const std::vector<double>& steps) {
-  const double target = pick_step(m, steps);
-  for (size_t n = 0; n < c.node_count(); ++n)
-    if (steps[n] < target) c.inertia[n] = c.mass[n] * (target / steps[n]) * (target / steps[n]);
-}
-}  // namespace
-
-void scale_node_inertia(Model& m) {
-  m.continuum.inertia = m.continuum.mass;
-  m.continuum3.inertia = m.continuum3.mass;
-  if (!m.settings.dt_scaled) return;
-  if (m.dim == 3 && m.continuum3.zone_count()) scale_inertia(m, m.continuum3, node_timesteps3(m));
-  if (m.dim == 2 && m.continuum.zone_count()) scale_inertia(m, m.continuum, node_timesteps(m));
+std::vector<double> node_timesteps(const Model& m) {
+  if (m.dim == 3) return m.continuum3.zone_count() ? node_timesteps3(m) : std::vector<double>{};
+  return m.continuum.zone_count() ? node_timesteps2(m) : std::vector<double>{};
 }
 
 }  // namespace tessera

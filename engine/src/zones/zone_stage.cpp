@@ -54,6 +54,24 @@ ZoneMotion step_zones(Model& m, ContinuumT<D>& zc, const typename ContinuumT<D>:
 }
 }  // namespace
 
+namespace {
+template <int D>
+double twice_energy(const ContinuumT<D>& c) {
+  double e = 0.0;
+  for (size_t n = 0; n < c.node_count(); ++n) e += c.inertia[n] * c.vel[n].squaredNorm();
+  return e;
+}
+}  // namespace
+
+double twice_node_energy(const Model& m) {
+  return m.dim == 3 ? twice_energy(m.continuum3) : twice_energy(m.continuum);
+}
+
+void stop_nodes(Model& m) {
+  for (auto& v : m.continuum.vel) v.setZero();
+  for (auto& v : m.continuum3.vel) v.setZero();
+}
+
 ZoneMotion zone_stage(Model& m, const Damping& d) {
   if (m.dim == 3) return step_zones(m, m.continuum3, m.settings.gravity3, m.det_node3, d);
   return step_zones(m, m.continuum, m.settings.gravity, m.det_node, d);

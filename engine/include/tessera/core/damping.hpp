@@ -1,6 +1,7 @@
 // Damping (chapter 5.2.4), the same for every degree of freedom in 2D and 3D: local damping
 // against the sign of the velocity, adaptive global (viscous) damping servoed to the power of the
-// unbalanced forces, or none. Viscous and Rayleigh damping would be further modes here.
+// unbalanced forces, kinetic damping (light local damping, and every velocity set to zero at
+// each peak of the kinetic energy: step.cpp), or none.
 #pragma once
 
 #include <cmath>

@@ -4,6 +4,7 @@
 // the run options; the cycle (step.hpp) is a set of free functions over this state.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,7 +28,9 @@ struct Material {
   ZoneProperties zone;
 };
 
-enum class DampingMode : uint8_t { kLocal = 0, kAdaptiveGlobal = 1, kNone = 2 };
+// kKinetic: local damping (kinetic_alpha) and every velocity set to zero whenever the kinetic
+// energy has passed a peak (kinetic damping of dynamic relaxation), for static solutions.
+enum class DampingMode : uint8_t { kLocal = 0, kAdaptiveGlobal = 1, kNone = 2, kKinetic = 3 };
 
 struct Settings {
   Vec2 gravity = Vec2::Zero();
@@ -36,9 +39,10 @@ struct Settings {
   double contact_tolerance = 0.0;  // contacts are tracked within this gap; 0: the rounding length
   DampingMode damping = DampingMode::kLocal;
   double local_alpha = 0.8;
-  double global_ratio = 0.5;  // adaptive global damping: share of kinetic energy change removed
-  double dt_safety = 0.5;     // time step = safety * 2 min sqrt(m/k)
-  double dt_fixed = 0.0;      // a user's time step (0: automatic)
+  double global_ratio = 0.5;   // adaptive global damping: share of kinetic energy change removed
+  double kinetic_alpha = 0.2;  // kinetic damping: the local damping beside the energy peaks
+  double dt_safety = 0.5;      // time step = safety * 2 min sqrt(m/k)
+  double dt_fixed = 0.0;       // a user's time step (0: automatic)
   // Density scaling of deformable blocks for static solutions: the step is the median of the
   // nodes' own stable steps, and nodes below it take more inertia (gravity keeps the real mass).
   uint8_t dt_scaled = 0;
@@ -77,8 +81,14 @@ struct Model {
   uint64_t cycle = 0;
   double time = 0.0, dt = 0.0;
   bool dt_dirty = true;
+  // Density scaling of the rigid blocks (`timestep scaled`): each block's mass and moments of
+  // inertia in its motion are multiplied by these (translation, rotation); gravity and reported
+  // masses keep the real density. Empty when the model is not scaled.
+  std::vector<std::array<double, 2>> block_scale;
   // Adaptive global damping coefficient (1/s).
   double global_c = 0.0;
+  // Kinetic damping: twice the kinetic energy after the last cycle (0 after a stop).
+  double kinetic_last = 0.0;
   // Last cycle's convergence measures.
   double max_unbalanced = 0.0, mean_applied = 0.0, ratio = 1.0;
   // Block positions at the last detection pass (Verlet list), and whether one is due.

@@ -1,7 +1,7 @@
 // The time step (chapter 5.2.4), chosen here alone for 2D and 3D, rigid and deformable blocks:
 // the user's fixed step, or the safety factor times the smallest stable step - of the rigid
 // blocks on their joints (the dimension's back end), of the zones, and of the outline nodes on
-// their joints - which under density scaling is the nodes' median instead.
+// their joints - which under density scaling is the median of all of them instead.
 #pragma once
 
 namespace tessera {
@@ -18,5 +18,9 @@ double stiffest_joint(const Model& m);
 double stiffest_joint_pair(const Model& m);
 // The step the model cycles at.
 double compute_timestep(const Model& m);
+// Sets the step the model cycles at and, under density scaling (`timestep scaled`), the rigid
+// blocks' scales (Model::block_scale) and the nodes' inertia: every degree of freedom whose own
+// stable step is below the median takes the inertia that makes its own step the median.
+void set_timestep(Model& m);
 
 }  // namespace tessera

@@ -26,11 +26,8 @@ Vec2 contact_side_velocity(const Model& m, size_t contact, bool side_b);
 // Adds the contact forces on deformable blocks to their nodes (continuum.force), gathered in
 // a fixed order per block.
 void add_contact_forces_to_nodes(Model& m);
-// Time step limit of the deformable blocks: zones, and nodes against joint stiffness; under
-// density scaling, the median of the nodes' own limits.
-double deformable_timestep(const Model& m);
-// Each node's inertia: its lumped mass, raised under density scaling so that the node is stable
-// at the scaled step.
-void scale_node_inertia(Model& m);
+// Each node's own stable step of the model's dimension (1e300 for a massless node): its zones',
+// and for an outline node its mass against the joints (empty without zones).
+std::vector<double> node_timesteps(const Model& m);
 
 }  // namespace tessera

@@ -20,5 +20,9 @@ struct ZoneMotion {
 // One step of the zones under the cycle's damping (local damping's alpha; global viscosity does
 // not reach them). Throws ModelError if a node moves half the contact tolerance in one step.
 ZoneMotion zone_stage(Model& m, const Damping& d);
+// Twice the kinetic energy of the nodes (with their density-scaled inertia), and every node's
+// velocity set to zero (kinetic damping; fixed components take theirs again when they move).
+double twice_node_energy(const Model& m);
+void stop_nodes(Model& m);
 
 }  // namespace tessera
