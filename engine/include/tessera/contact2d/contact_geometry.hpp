@@ -69,7 +69,7 @@ inline bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerA
   const Vec2& c = arc.centre;
   const double r = arc.radius;
   const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
-  const uint32_t vn = v0 + (vk - v0 + 1) % n;
+  const uint32_t vn = vk + 1 < v0 + n ? vk + 1 : v0;
   const Vec2& p = B.world_vertex[vk];
   const Vec2& u = B.world_edge_dir[vk];
   const double len = B.edge_length[vk];
