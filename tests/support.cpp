@@ -1,7 +1,9 @@
 #include "support.hpp"
 
+#include <Eigen/Dense>
 #include <QMetaMethod>
 #include <QTest>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -67,6 +69,15 @@ uint64_t state_hash(const Model& m) {
     for (const SubContact& s : c.subs) mix(h, &s.fn, sizeof s.fn), mix(h, s.fs.data(), 24);
   mix(h, &m.time, sizeof m.time);
   return h;
+}
+
+double wedge_limit_angle(const Eigen::Vector3d& na, const Eigen::Vector3d& nb) {
+  Eigen::Vector3d s = na.cross(nb).normalized();
+  if (s.z() > 0) s = -s;
+  Eigen::Matrix3d a;
+  a.col(0) = na, a.col(1) = nb, a.col(2) = -s;
+  const Eigen::Vector3d x = a.colPivHouseholderQr().solve(Eigen::Vector3d(0, 0, 1));  // unit weight
+  return std::atan(x(2) / (x(0) + x(1))) * 180.0 / M_PI;
 }
 
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {

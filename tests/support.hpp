@@ -56,6 +56,11 @@ uint64_t solve_zones(ContinuumT<D>& c, double ratio, uint64_t max_cycles) {
   return max_cycles;
 }
 
+// The friction angle (degrees) at which a wedge on planes of unit normals na and nb is at the
+// limit (Hoek and Bray): the weight balanced by normal reactions on both planes and a force T
+// along their intersection; sliding starts when T exceeds (N_A + N_B) tan phi.
+double wedge_limit_angle(const Eigen::Vector3d& na, const Eigen::Vector3d& nb);
+
 // Slope of the least-squares line through (x, y) samples.
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
 

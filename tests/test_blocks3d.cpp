@@ -11,6 +11,7 @@
 
 using namespace tessera;
 using tessera::test::ScriptRun;
+using tessera::test::wedge_limit_angle;
 
 namespace {
 constexpr double kDeg = M_PI / 180;
@@ -78,17 +79,6 @@ double time_to_tilt(ScriptRun& r, const std::function<double()>& tilt, double li
   return r.model().time;
 }
 
-// The friction angle at which a wedge on planes A and B is at the limit (Hoek and Bray): the
-// weight balanced by normal reactions on both planes and a force T along their intersection;
-// sliding starts when T exceeds (N_A + N_B) tan phi.
-double wedge_limit_angle(const Vec3& na, const Vec3& nb) {
-  Vec3 s = na.cross(nb).normalized();
-  if (s.z() > 0) s = -s;
-  Mat3 a;
-  a.col(0) = na, a.col(1) = nb, a.col(2) = -s;
-  const Vec3 x = a.colPivHouseholderQr().solve(Vec3(0, 0, 1));  // unit weight
-  return std::atan(x(2) / (x(0) + x(1))) / kDeg;
-}
 }  // namespace
 
 class TestBlocks3d : public QObject {

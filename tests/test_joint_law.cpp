@@ -1,4 +1,5 @@
-// The Coulomb joint law: stiffness, slip, bond failure in tension and shear, dilation.
+// The Coulomb joint law: stiffness, slip, bond failure in tension and shear, residual strength,
+// dilation.
 #include <QtTest>
 #include <cmath>
 
@@ -68,6 +69,29 @@ class TestJointLaw : public QObject {
     j.impl->update(j, 1.0, 1e-4, 1e-3, s);  // trial -5.5e5 beyond 1e5 + 5.77e4
     QVERIFY(!(s.flags & kBonded));
     QVERIFY(std::abs(s.fs + 1e5 * std::tan(M_PI / 6)) < 1e-6);
+  }
+  // coulomb-residual: the peak (cohesion 1e5, friction 30) until the bond fails in shear, then
+  // the residual strength (cohesion 2e4, friction 20) at every later slip - not friction alone.
+  void residualStrengthAfterShearFailure() {
+    auto j = joint(30, 1e5);
+    j.law = "coulomb-residual", j.residual_friction = 20, j.residual_cohesion = 2e4;
+    j.finalize();
+    JointState s;
+    s.flags = kBonded;
+    j.impl->update(j, 1.0, 1e-4, 1e-3, s);  // trial -5e5 beyond the peak 1e5 + 5.77e4
+    QVERIFY((s.flags & kBroken) && (s.flags & kSlipping));
+    const double residual = 2e4 + 1e5 * std::tan(20 * M_PI / 180);
+    QVERIFY(std::abs(s.fs + residual) < 1e-6);
+    j.impl->update(j, 1.0, 1e-4, 1e-3, s);  // slips on at the residual strength
+    QVERIFY(std::abs(s.fs + residual) < 1e-6);
+    // Without residual values the law is plain coulomb: friction only after failure.
+    auto plain = joint(30, 1e5);
+    plain.law = "coulomb-residual";
+    plain.finalize();
+    JointState t;
+    t.flags = kBonded;
+    plain.impl->update(plain, 1.0, 1e-4, 1e-3, t);
+    QVERIFY(std::abs(t.fs + 1e5 * std::tan(M_PI / 6)) < 1e-6);
   }
   void dilationWhileSlippingUpToTheLimit() {
     const auto j = joint(30, 0, 0, 10, 2e-3);

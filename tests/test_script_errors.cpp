@@ -47,6 +47,17 @@ class TestScriptErrors : public QObject {
         has(error_of("damping kinetic 1.5"), "test:1: kinetic damping's alpha must be in [0, 1)"));
     QVERIFY(has(error_of("damping kinetic 0.2 0.3"), "unexpected word '0.3'"));
   }
+  void badFactorOfSafetyIsNamed() {
+    QVERIFY(has(error_of("solve fos joints=maybe"), "test:1: write joints=on or joints=off"));
+    QVERIFY(has(error_of("solve fos cycles=1"), "the cycle limit of a trial must be"));
+    QVERIFY(has(error_of("solve fos joints=off zones=off"), "no strength to reduce"));
+    QVERIFY(has(error_of("solve fos now"), "unexpected word 'now'"));
+    QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 rcohesion=5"),
+                "rfriction and rcohesion belong to law=coulomb-residual"));
+    QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 law=coulomb-residual "
+                         "rfriction=95"),
+                "rfriction must be below 90 degrees"));
+  }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
     QVERIFY(has(e, "test:1:"));

@@ -11,11 +11,14 @@ namespace tessera {
 
 namespace {
 
-// Linear stiffness, Coulomb slip, cohesion and tensile strength lost for good on failure,
-// dilation while slipping (up to an optional shear displacement).
+// Linear stiffness, Coulomb slip, cohesion and tensile strength lost for good on failure (or,
+// as coulomb-residual, a residual cohesion and friction after a shear failure), dilation while
+// slipping (up to an optional shear displacement).
 class CoulombLaw final : public JointLaw {
  public:
-  const char* name() const override { return "coulomb"; }
+  // residual: a failed bond keeps the residual cohesion and friction (law=coulomb-residual).
+  explicit CoulombLaw(bool residual) : residual_(residual) {}
+  const char* name() const override { return residual_ ? "coulomb-residual" : "coulomb"; }
   void update(const JointProperties& p, double L, double overlap, double dus, double dus2,
               JointState& s) const override {
     const bool bonded = s.flags & kBonded;
@@ -49,13 +52,17 @@ class CoulombLaw final : public JointLaw {
     // Shear magnitude (the 2D form has one component and stays exact).
     const bool plane = s.fs2 == 0.0;
     const double mag = plane ? std::abs(s.fs) : std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
-    double limit = (bonded ? p.cohesion * L : 0.0) + s.fn * p.tan_friction;
+    // The strength: a bond's peak; a failed one's residual (coulomb-residual); else friction.
+    const bool residual = residual_ && (s.flags & kBroken);
+    double limit = bonded     ? p.cohesion * L + s.fn * p.tan_friction
+                   : residual ? p.residual_cohesion * L + s.fn * p.tan_residual
+                              : s.fn * p.tan_friction;
     if (mag > std::max(limit, 0.0)) {
       // Shear failure of a bond leaves friction only.
       if (bonded) {
         s.flags = static_cast<uint8_t>((s.flags & ~kBonded) | kBroken);
         s.fn = std::max(s.fn, 0.0);
-        limit = s.fn * p.tan_friction;
+        limit = residual_ ? p.residual_cohesion * L + s.fn * p.tan_residual : s.fn * p.tan_friction;
       }
       // Back to the slip surface along the trial shear's direction.
       if (plane) {
@@ -73,10 +80,13 @@ class CoulombLaw final : public JointLaw {
             p.tan_dilation * (dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2));
     }
   }
+
+ private:
+  bool residual_;
 };
 
-const CoulombLaw kCoulomb;
-const JointLaw* const kLaws[] = {&kCoulomb};
+const CoulombLaw kCoulomb(false), kCoulombResidual(true);
+const JointLaw* const kLaws[] = {&kCoulomb, &kCoulombResidual};
 
 }  // namespace
 
@@ -97,6 +107,8 @@ void JointProperties::finalize() {
   if (!impl) throw std::invalid_argument("unknown joint law '" + law + "'");
   tan_friction = std::tan(friction * std::numbers::pi / 180.0);
   tan_dilation = std::tan(dilation * std::numbers::pi / 180.0);
+  tan_residual = residual_friction < 0.0 ? tan_friction
+                                         : std::tan(residual_friction * std::numbers::pi / 180.0);
 }
 
 }  // namespace tessera

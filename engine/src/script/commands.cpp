@@ -212,6 +212,8 @@ void Interpreter::cmd_joint(Args& a) {
     take_num(a, "dilation", j.dilation);
     take_num(a, "dilation_limit", j.dilation_limit);
     take(a, "law", j.law);
+    take_num(a, "rfriction", j.residual_friction);
+    take_num(a, "rcohesion", j.residual_cohesion);
     done(a);
     if (j.kn <= 0.0 || j.ks <= 0.0) fail("joint '" + name + "': kn and ks must be positive");
     if (j.friction < 0.0 || j.friction >= 90.0)
@@ -220,6 +222,10 @@ void Interpreter::cmd_joint(Args& a) {
       fail("joint '" + name + "': dilation must be in [0, 90) degrees");
     if (j.cohesion < 0.0 || j.tension < 0.0 || j.dilation_limit < 0.0)
       fail("joint '" + name + "': cohesion, tension and dilation_limit cannot be negative");
+    if (j.residual_friction >= 90.0 || j.residual_cohesion < 0.0)
+      fail("joint '" + name + "': rfriction must be below 90 degrees and rcohesion not negative");
+    if (j.law != "coulomb-residual" && (j.residual_friction >= 0.0 || j.residual_cohesion > 0.0))
+      fail("joint '" + name + "': rfriction and rcohesion belong to law=coulomb-residual");
     if (!find_joint_law(j.law))
       fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
     j.finalize();

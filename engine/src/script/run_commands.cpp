@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tessera/core/parallel.hpp"
+#include "tessera/core/strength_reduction.hpp"
 #include "tessera/io/state_io.hpp"
 #include "tessera/script/expr.hpp"
 #include "tessera/script/script.hpp"
@@ -95,6 +96,7 @@ void Interpreter::cmd_step(Args& a) {
 }
 
 void Interpreter::cmd_solve(Args& a) {
+  if (!a.words.empty() && a.words[0] == "fos") return solve_fos(a);
   if (!a.words.empty())
     fail("unexpected word '" + a.words[0] + "' (write 'solve ratio=R cycles=N')");
   double ratio = 1e-5, cycles = 1e6;
@@ -119,6 +121,91 @@ void Interpreter::cmd_solve(Args& a) {
                   "solve stopped at the cycle limit (%.0f) with ratio %.3e above %.3e", cycles,
                   model_.ratio, ratio);
     warn(buf);
+  }
+}
+
+void Interpreter::solve_fos(Args& a) {
+  if (a.words.size() > 1) fail("unexpected word '" + a.words[1] + "'");
+  FosOptions o;
+  const auto on_off = [&](const char* key, bool& value) {
+    std::string v;
+    if (!take(a, key, v)) return;
+    if (v != "on" && v != "off") fail(std::string("write ") + key + "=on or " + key + "=off");
+    value = v == "on";
+  };
+  on_off("joints", o.joints);
+  on_off("zones", o.zones);
+  double cycles = 20000;
+  take_num(a, "ratio", o.ratio);
+  take_num(a, "cycles", cycles);
+  done(a);
+  if (o.ratio <= 0.0) fail("the ratio limit must be positive");
+  if (cycles < 2 || cycles != std::floor(cycles))
+    fail("the cycle limit of a trial must be a whole number of at least 2");
+  if (!o.joints && !o.zones) fail("joints=off and zones=off leave no strength to reduce");
+  o.cycles = static_cast<uint64_t>(cycles);
+  FosResult res;
+  char buf[240];
+  // The trials run on copies of the model: none of their cycles joins the VTK series.
+  const uint64_t vtk_interval = vtk_interval_;
+  vtk_interval_ = 0;
+  struct Restore {
+    uint64_t& slot;
+    uint64_t value;
+    ~Restore() { slot = value; }
+  } restore{vtk_interval_, vtk_interval};
+  run_with_progress(
+      [&](const Progress& p) {
+        res = factor_of_safety(model_, o, p, [&](const FosTrial& t) {
+          if (t.stands)
+            std::snprintf(buf, sizeof buf, "fos trial %.4g: stands (%llu cycles, ratio %.2e)",
+                          t.factor, static_cast<unsigned long long>(t.cycles), t.ratio);
+          else if (!t.stopped.empty())
+            std::snprintf(buf, sizeof buf, "fos trial %.4g: fails (%s)", t.factor,
+                          t.stopped.c_str());
+          else
+            std::snprintf(buf, sizeof buf,
+                          "fos trial %.4g: fails (%llu cycles, ratio %.2e; moved %.3g m at half "
+                          "way, %.3g m at the end)",
+                          t.factor, static_cast<unsigned long long>(t.cycles), t.ratio,
+                          t.moved_half, t.moved_end);
+          log(buf);
+        });
+        return res.bracketed;
+      },
+      "solve fos");
+  if (!res.bracketed && !res.trials.empty() && res.trials.back().stopped == "stopped") {
+    warn("solve fos was stopped before the factor of safety was bracketed");
+    return;
+  }
+  summary_.fos = res.factor;
+  if (!res.bracketed) {
+    std::snprintf(buf, sizeof buf, "the model %s at every factor tried: factor of safety %s %g",
+                  res.factor > 1.0 ? "stood" : "failed", res.factor > 1.0 ? "above" : "below",
+                  res.factor);
+    warn(buf);
+  }
+  std::snprintf(buf, sizeof buf, "factor of safety %.2f (%zu trials)", res.factor,
+                res.trials.size());
+  log(buf);
+  if (!res.mechanism) return;
+  // The mechanism at the smallest failing factor: a VTK snapshot, and a figure when drawn.
+  fs::create_directories(out_dir_);
+  VtkSeries((fs::path(out_dir_) / "fos_mechanism").string()).write(*res.mechanism);
+  if (figure_sink_) {
+    FigureRequest r;
+    r.path = (fs::path(out_dir_) / "fos_mechanism.png").string();
+    r.view.colour = ColourBy::kDisplacement;
+    r.view.vectors = true;
+    std::snprintf(buf, sizeof buf, "Mechanism at the smallest failing factor, %.3g", [&] {
+      double f = 1e300;
+      for (const FosTrial& t : res.trials)
+        if (!t.stands) f = std::min(f, t.factor);
+      return f;
+    }());
+    r.view.title = buf;
+    figure_sink_(r, *res.mechanism);
+    log("figure " + r.path);
   }
 }
 
@@ -353,6 +440,7 @@ void Interpreter::finish() {
   j["contacts"] = model_.dim == 3 ? model_.contacts3.size() : model_.contacts.size();
   j["threads"] = thread_count();
   j["warnings"] = summary_.warnings;
+  if (summary_.fos) j["fos"] = *summary_.fos;
   // Bytes that are not UTF-8 (a title typed in another encoding) become U+FFFD rather than
   // stopping the write; the file is written whole and then moved in place, never left empty.
   const fs::path path = fs::path(out_dir_) / "summary.json", part = path.string() + ".part";

@@ -39,8 +39,11 @@ struct JointProperties {
   double tension = 0.0;         // tensile strength, Pa
   double dilation = 0.0;        // degrees
   double dilation_limit = 0.0;  // shear displacement after which dilation stops (0: none)
+  // law=coulomb-residual: the strength of a bond once it has failed in shear (degrees, Pa; a
+  // negative friction means the peak friction). Plain coulomb leaves friction only.
+  double residual_friction = -1.0, residual_cohesion = 0.0;
   // Derived when the set is defined.
-  double tan_friction = 0.0, tan_dilation = 0.0;
+  double tan_friction = 0.0, tan_dilation = 0.0, tan_residual = 0.0;
   const JointLaw* impl = nullptr;
   void finalize();  // derives the tangents and binds the law; throws on an unknown law
 };

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ struct RunSummary {
   uint64_t cycles_run = 0;
   double wall_seconds = 0.0;  // time spent cycling
   std::vector<std::string> warnings;
+  std::optional<double> fos;  // the last `solve fos`
 };
 
 // A step or solve the script ran: the stages of an analysis, as the GUI lists them.
@@ -147,6 +149,7 @@ class Interpreter {
   void cmd_history(Args&);
   void cmd_vtk(Args&);
   void cmd_figure(Args&);
+  void solve_fos(Args&);
   void cmd_save(Args&);
   void cmd_restore(Args&);
   void cmd_call(Args&);
