@@ -71,6 +71,30 @@ uint64_t state_hash(const Model& m) {
   return h;
 }
 
+double joint_size(const Model& m) {
+  double s = 0.0;
+  if (m.dim == 3) {
+    for (const Contact3& c : m.contacts3)
+      for (const SubContact& sc : c.subs) s += sc.area;
+  } else {
+    for (size_t i = 0; i < m.contacts.size(); ++i) s += m.contacts.length[i];
+  }
+  return s;
+}
+
+std::string wedge_script(double phi, double dip_a, double dd_a, double dip_b, double dd_b) {
+  char buf[600];
+  std::snprintf(buf, sizeof buf,
+                "dimension 3\ntolerance 0.01\nmaterial define rock density=2600\n"
+                "joint define j kn=1e10 ks=1e10 friction=%.12g\njoint assign j\n"
+                "region -12,0,-14 12,14,0 material=rock\n"
+                "crack dip=%.12g ddir=%.12g origin=0,0,-6 name=A\n"
+                "crack dip=%.12g ddir=%.12g origin=0,0,-6 name=B\n"
+                "group wedge at=0,0.5,-0.5\nfix all\nfree group=wedge\ngravity 0 0 -9.81\n",
+                phi, dip_a, dd_a, dip_b, dd_b);
+  return buf;
+}
+
 double wedge_limit_angle(const Eigen::Vector3d& na, const Eigen::Vector3d& nb) {
   Eigen::Vector3d s = na.cross(nb).normalized();
   if (s.z() > 0) s = -s;

@@ -56,6 +56,14 @@ uint64_t solve_zones(ContinuumT<D>& c, double ratio, uint64_t max_cycles) {
   return max_cycles;
 }
 
+// The joints' total size in touch: contact lengths in 2D, sub-contact areas in 3D.
+double joint_size(const Model& m);
+
+// A tetrahedral wedge in a vertical face (normal -y): a 24 x 14 x 14 m region cut by joints A
+// and B (dip, dip direction in degrees) through a point 6 m below the crest, friction phi,
+// kn = ks = 1e10; everything fixed but the wedge (group wedge), gravity on.
+std::string wedge_script(double phi, double dip_a, double dd_a, double dip_b, double dd_b);
+
 // The friction angle (degrees) at which a wedge on planes of unit normals na and nb is at the
 // limit (Hoek and Bray): the weight balanced by normal reactions on both planes and a force T
 // along their intersection; sliding starts when T exceeds (N_A + N_B) tan phi.

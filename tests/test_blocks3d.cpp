@@ -12,6 +12,7 @@
 using namespace tessera;
 using tessera::test::ScriptRun;
 using tessera::test::wedge_limit_angle;
+using tessera::test::wedge_script;
 
 namespace {
 constexpr double kDeg = M_PI / 180;
@@ -176,19 +177,7 @@ class TestBlocks3d : public QObject {
     qInfo("Hoek-Bray limit friction angle %.3f degrees", limit);
     const auto slides = [&](double phi) {
       ScriptRun r;
-      r.run(
-          "dimension 3\ntolerance 0.01\nmaterial define rock density=2600\n"
-          "joint define j kn=1e10 ks=1e10 friction=" +
-          num(phi) +
-          "\njoint assign j\nregion -12,0,-14 12,14,0 material=rock\n"
-          "crack dip=" +
-          num(dip_a) + " ddir=" + num(dd_a) +
-          " origin=0,0,-6 name=A\n"
-          "crack dip=" +
-          num(dip_b) + " ddir=" + num(dd_b) +
-          " origin=0,0,-6 name=B\n"
-          "group wedge at=0,0.5,-0.5\nfix all\nfree group=wedge\n"
-          "gravity 0 0 -9.81\ndamping none\n");
+      r.run(wedge_script(phi, dip_a, dd_a, dip_b, dd_b) + "damping none\n");
       Model& m = r.model();
       const size_t w = static_cast<size_t>(
           std::find(m.blocks3.group.begin(), m.blocks3.group.end(), m.group_index("wedge", false)) -

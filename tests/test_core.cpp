@@ -13,6 +13,7 @@
 #include "tessera/io/state_io.hpp"
 
 using namespace tessera;
+using tessera::test::joint_size;
 using tessera::test::ScriptRun;
 using tessera::test::state_hash;
 
@@ -33,18 +34,6 @@ std::string scene(bool three, const std::string& settings = "", const std::strin
   return "round 0.005\n" + common + "block " + slab + " group=slab material=rock\nblock " + block +
          " group=top material=rock\nfix group=slab\ngravity 0 -10\n"
          "history ydisp block=2 label=y\n";
-}
-
-// The joint's share in touch: contact lengths in 2D, sub-contact areas in 3D.
-double joint_size(const Model& m) {
-  double s = 0.0;
-  if (m.dim == 3) {
-    for (const Contact3& c : m.contacts3)
-      for (const SubContact& sc : c.subs) s += sc.area;
-  } else {
-    for (size_t i = 0; i < m.contacts.size(); ++i) s += m.contacts.length[i];
-  }
-  return s;
 }
 
 double last(const Model& m, const std::string& label) {

@@ -589,6 +589,13 @@ class TestExamples : public QObject {
     const Run r = run_example("rock_wedge", {}, dir_);
     QCOMPARE(r.exit_code, 0);
     QVERIFY(r.out.contains("crack B: 2 -> 4 blocks"));
+    // Strength reduction at 45 degrees: Hoek & Bray's factor tan 45 / tan 37.22, within the
+    // bisection's 0.01 and the model's own error; the mechanism drawn.
+    const double fos = read_summary(r.dir)["fos"].toDouble();
+    qInfo("factor of safety %.4f (Hoek & Bray %.4f)", fos, 1.0 / std::tan(37.22 * M_PI / 180));
+    QVERIFY(std::abs(fos - 1.0 / std::tan(37.22 * M_PI / 180)) < 0.02);
+    QVERIFY(r.out.contains("factor of safety 1.3"));
+    check_figure(r.dir + "/fos_mechanism.png", QSize(1600, 1000));
     auto h = read_history(r.dir);
     const double x = h["wedge_x"].back(), y = h["wedge_y"].back(), z = h["wedge_z"].back();
     const double d = std::sqrt(x * x + y * y + z * z);

@@ -19,6 +19,7 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
+#include <algorithm>
 #include <thread>
 
 #include "tessera/script/script.hpp"
@@ -1100,6 +1101,35 @@ class TestGui : public QObject {
     d = w.openDialog("wall");
     QVERIFY(w.view()->previewSegments() > 12);
     d->reject();
+  }
+
+  // Run > Factor of safety: the dialog runs `solve fos`, the console reports the trials and
+  // the factor, and the model shown is the one before the trials.
+  void factorOfSafetyFromTheRunMenu() {
+    const QString path = write_script(
+        dir_, "fos.tess",
+        "set psi = 20\nset c = cos(psi)\nset s = sin(psi)\nround 0.005\n"
+        "material define rock density=2500\njoint define j kn=1e10 ks=1e10 friction=35\n"
+        "joint assign j\n"
+        "block (-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s) group=slab material=rock\n"
+        "block 0,0 c,s (c-s),(s+c) (-s),c material=rock\nfix group=slab\ngravity 0 -9.81\n"
+        "solve ratio=1e-6\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    const QList<QAction*> actions = w.findChildren<QAction*>();
+    QVERIFY(std::any_of(actions.begin(), actions.end(),
+                        [](QAction* a) { return a->text() == "&Factor of safety…"; }));
+    QPointer<CommandDialog> d = w.openDialog("fos");
+    QVERIFY(d);
+    d->setValue("cycles", "3000");
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QTRY_VERIFY(d.isNull() || !d->isVisible());
+    qInfo("%s", qPrintable(w.journal().last()));
+    QVERIFY(w.journal().last().startsWith("solve fos"));
+    QVERIFY(w.journal().last().contains("cycles=3000"));
+    QVERIFY(w.console()->text().contains("fos trial 2: fails"));
+    QVERIFY(w.console()->text().contains("factor of safety 1.92"));
   }
 
   // A dialog whose command fails stays open with its fields and shows the error; corrected, it

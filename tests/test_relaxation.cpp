@@ -43,14 +43,7 @@ double top_settlement(const Model& m) {
 // One joint's stiffness: kn times the joints' total length (2D) or area (3D) in touch, over the
 // number of joints.
 double joint_stiffness(const Model& m, double kn) {
-  double s = 0.0;
-  if (m.dim == 3) {
-    for (const Contact3& c : m.contacts3)
-      for (const SubContact& sc : c.subs) s += sc.area;
-  } else {
-    for (size_t i = 0; i < m.contacts.size(); ++i) s += m.contacts.length[i];
-  }
-  return kn * s / kBlocks;
+  return kn * tessera::test::joint_size(m) / kBlocks;
 }
 }  // namespace
 

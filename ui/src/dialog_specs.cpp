@@ -143,6 +143,14 @@ DialogSpec spec(const QString& name) {
              {"#value", "Alpha or ratio", "", "",
               "local: alpha (default 0.8); kinetic: alpha (0.2); global: the power ratio removed "
               "(0.5)"}}};
+  if (name == "fos")
+    return {"Factor of safety",
+            "solve fos",
+            {{"joints", "Reduce the joints", "", "on", "on or off"},
+             {"zones", "Reduce the zones", "", "on", "on or off"},
+             {"ratio", "Equilibrium ratio", "", "1e-5", "a trial stands once it reaches this"},
+             {"cycles", "Cycles per trial", "", "20000",
+              "a trial not standing by then and still moving has failed"}}};
   if (name == "assign")
     return {"Assign to the selection",
             "",

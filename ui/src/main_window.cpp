@@ -144,6 +144,8 @@ void MainWindow::buildActions() {
   pause_action_->setCheckable(true);
   connect(pause_action_, &QAction::toggled, this, &MainWindow::setPaused);
   stop_action_ = run->addAction("St&op", QKeySequence("Shift+F5"), this, &MainWindow::stopRun);
+  run->addSeparator();
+  run->addAction("&Factor of safety…", this, [this] { openDialog("fos"); });
   QMenu* view = view_menu_ = menuBar()->addMenu("&View");
   view->addAction("&Fit model", QKeySequence("Home"), this, [this] { view_->resetCamera(); });
   // 3D models: the camera's projection, and a plane to look inside.
