@@ -52,6 +52,7 @@ class TestScriptErrors : public QObject {
     QVERIFY(has(error_of("solve fos cycles=1"), "the cycle limit of a trial must be"));
     QVERIFY(has(error_of("solve fos joints=off zones=off"), "no strength to reduce"));
     QVERIFY(has(error_of("solve fos now"), "unexpected word 'now'"));
+    QVERIFY(has(error_of("solve fos exclude=rok"), "there is no group 'rok'"));
     QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 rcohesion=5"),
                 "rfriction and rcohesion belong to law=coulomb-residual"));
     QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 law=coulomb-residual "

@@ -54,13 +54,89 @@ double largest_move(const Model& m, const Model& initial) {
 
 }  // namespace
 
-void reduce_strength(Model& m, double factor, bool joints, bool zones) {
-  if (joints)
-    for (JointProperties& j : m.joints) reduce(j, factor);
-  if (zones) {
-    for (Material& mat : m.materials)
-      if (!mat.zone.model.empty()) reduce(mat.zone, factor);
-    sync_zone_materials(m);
+namespace {
+
+// Joint sets n..2n-1 become reduced copies of 0..n-1; the table sends every pair to the copies
+// except pairs touching an excluded group, which keep the original sets in the original order
+// of precedence (the table's later entries win); contacts take their sets afresh.
+void reduce_joints_except(Model& m, double f, const std::vector<int>& exclude) {
+  const auto n = static_cast<uint32_t>(m.joints.size());
+  for (uint32_t j = 0; j < n; ++j) {
+    JointProperties copy = m.joints[j];
+    reduce(copy, f);
+    m.joints.push_back(copy);
+  }
+  const std::vector<JointAssignment> table = m.joint_table;
+  for (JointAssignment& e : m.joint_table) e.joint += n;
+  const auto matches = [](int want, int g) { return want < 0 || want == g; };
+  for (const JointAssignment& e : table)
+    for (int g : exclude) {
+      if (matches(e.group_a, g)) m.joint_table.push_back({g, e.group_b, e.joint, e.tag});
+      if (matches(e.group_b, g)) m.joint_table.push_back({e.group_a, g, e.joint, e.tag});
+    }
+  const auto exempt = [&](uint32_t b) {
+    return std::find(exclude.begin(), exclude.end(), m.block_group(b)) != exclude.end();
+  };
+  const auto resolve = [&](uint32_t a, uint32_t b, int tag, uint32_t& joint) {
+    const int j = m.joint_for(a, b, tag);
+    if (j >= 0)
+      joint = static_cast<uint32_t>(j);
+    else if (!exempt(a) && !exempt(b))
+      joint += n;
+  };
+  for (size_t i = 0; i < m.contacts.size(); ++i)
+    resolve(m.contacts.a[i], m.contacts.b[i], m.contacts.tag[i], m.contacts.joint[i]);
+  for (Contact3& c : m.contacts3) resolve(c.a, c.b, c.tag, c.joint);
+}
+
+// Zone materials: reduced copies after the originals, given to the zones of blocks outside the
+// excluded groups.
+template <int D>
+void reduce_zones_except(ContinuumT<D>& c, double f, const std::vector<uint8_t>& keep) {
+  const auto n = static_cast<uint32_t>(c.materials.size());
+  for (uint32_t k = 1; k < n; ++k) {
+    ZoneProperties copy = c.materials[k];
+    if (copy.impl && copy.model != "null") reduce(copy, f);
+    c.materials.push_back(copy);
+  }
+  for (size_t z = 0; z < c.zone_count(); ++z)
+    if (c.material[z] > 0 && !keep[z]) c.material[z] += n - 1;
+}
+
+}  // namespace
+
+void reduce_strength(Model& m, double factor, bool joints, bool zones,
+                     const std::vector<int>& exclude) {
+  if (exclude.empty()) {
+    if (joints)
+      for (JointProperties& j : m.joints) reduce(j, factor);
+    if (zones) {
+      for (Material& mat : m.materials)
+        if (!mat.zone.model.empty()) reduce(mat.zone, factor);
+      sync_zone_materials(m);
+    }
+    return;
+  }
+  if (joints) reduce_joints_except(m, factor, exclude);
+  if (!zones) return;
+  const auto excluded = [&](int g) {
+    return std::find(exclude.begin(), exclude.end(), g) != exclude.end();
+  };
+  if (m.dim == 3) {
+    std::vector<uint8_t> keep(m.continuum3.zone_count(), 0);
+    const Blocks3& B = m.blocks3;
+    for (size_t b = 0; b < B.size(); ++b)
+      if (B.deformable[b] && excluded(B.group[b]))
+        for (uint32_t z = B.zone_begin[b]; z < B.zone_end[b]; ++z) keep[z] = 1;
+    reduce_zones_except(m.continuum3, factor, keep);
+  } else {
+    std::vector<uint8_t> keep(m.continuum.zone_count(), 0);
+    const std::vector<int> owner = node_owners(m);
+    for (size_t z = 0; z < keep.size(); ++z) {
+      const int b = owner[m.continuum.zones[z][0]];
+      keep[z] = b >= 0 && excluded(m.blocks.group[static_cast<size_t>(b)]);
+    }
+    reduce_zones_except(m.continuum, factor, keep);
   }
 }
 
@@ -69,7 +145,7 @@ FosTrial strength_trial(const Model& initial, double factor, const FosOptions& o
   FosTrial t;
   t.factor = factor;
   out = initial;
-  reduce_strength(out, factor, o.joints, o.zones);
+  reduce_strength(out, factor, o.joints, o.zones, o.exclude);
   const uint64_t half = o.cycles / 2;
   try {
     SolveResult r = solve(out, o.ratio, half, progress, progress ? 1 : 0);

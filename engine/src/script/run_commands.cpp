@@ -136,6 +136,13 @@ void Interpreter::solve_fos(Args& a) {
   on_off("joints", o.joints);
   on_off("zones", o.zones);
   double cycles = 20000;
+  std::string groups;
+  if (take(a, "exclude", groups))
+    for (const std::string& g : split_top_level(groups)) {
+      const int k = model_.group_index(g, false);
+      if (k < 0) fail("there is no group '" + g + "'" + suggest(g, model_.groups));
+      o.exclude.push_back(k);
+    }
   take_num(a, "ratio", o.ratio);
   take_num(a, "cycles", cycles);
   done(a);

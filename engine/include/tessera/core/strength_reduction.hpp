@@ -15,10 +15,12 @@ namespace tessera {
 
 struct FosOptions {
   bool joints = true, zones = true;  // which strengths are reduced
-  double ratio = 1e-5;               // a trial stands once the ratio falls to this
-  uint64_t cycles = 20000;           // ... within this many cycles
-  double precision = 0.01;           // bisection stops when the bracket is this narrow
-  double max_factor = 64.0;          // brackets searched within [1 / max, max]
+  // Groups whose zones, and the joints that touch them, keep their full strength.
+  std::vector<int> exclude;
+  double ratio = 1e-5;       // a trial stands once the ratio falls to this
+  uint64_t cycles = 20000;   // ... within this many cycles
+  double precision = 0.01;   // bisection stops when the bracket is this narrow
+  double max_factor = 64.0;  // brackets searched within [1 / max, max]
 };
 
 // One trial: the factor, whether the model stood, and what decided it.
@@ -44,8 +46,11 @@ struct FosResult {
 };
 
 // Divides the strengths of the joints and/or the zones by `factor` (cohesion, tension, and
-// friction through its tangent; stiffness and dilation stay).
-void reduce_strength(Model& m, double factor, bool joints, bool zones);
+// friction through its tangent; stiffness and dilation stay). With groups to exclude, reduced
+// copies of the joint sets and zone materials are added beside the originals, which the
+// contacts touching those groups and the zones of their blocks keep.
+void reduce_strength(Model& m, double factor, bool joints, bool zones,
+                     const std::vector<int>& exclude = {});
 
 // One trial from `initial` at `factor`. The failure criterion: no equilibrium (ratio) within the
 // cycle limit and the largest displacement still growing (at the end more than 10% above its
