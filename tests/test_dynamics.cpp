@@ -121,6 +121,54 @@ class TestDynamics : public QObject {
     QVERIFY(std::abs(m.blocks.vx[0] + 1.0) < 0.02);
     QVERIFY(std::abs(m.blocks.vx[1] - 1.0) < 0.02);
   }
+  // Contact damping: a block dropped at 1 m/s onto a held one, gravity and global damping off,
+  // rebounds with the restitution of a linear spring and dashpot, e = exp(-pi zeta / sqrt(1 -
+  // zeta^2)) (the dashpot acting while the springs overlap), for zeta = ndamping. 2D and 3D.
+  void contactDampingGivesTheRestitution_data() {
+    QTest::addColumn<bool>("three");
+    QTest::addColumn<double>("zeta");
+    for (bool three : {false, true})
+      for (double zeta : {0.0, 0.1, 0.3})
+        QTest::newRow(qPrintable(QString("%1 zeta %2").arg(three ? "3D" : "2D").arg(zeta)))
+            << three << zeta;
+  }
+  void contactDampingGivesTheRestitution() {
+    QFETCH(bool, three);
+    QFETCH(double, zeta);
+    const std::string joint =
+        "material define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=30 ndamping=" +
+        std::to_string(zeta) + "\njoint assign j\ndamping none\n";
+    ScriptRun r;
+    if (three)
+      r.run("dimension 3\ntolerance 0.005\n" + joint +
+            "block box 0,0,-1 1,1,0 material=rock\nfix block=1\n"
+            "block box 0,0,0.001 1,1,1.001 material=rock\nvelocity block=2 vz=-1\n");
+    else
+      r.run("round 0.005\n" + joint +
+            "block 0,-1 1,-1 1,0 0,0 material=rock\nfix block=1\n"
+            "block 0,0.001 1,0.001 1,1.001 0,1.001 material=rock\nvelocity block=2 vy=-1\n");
+    r.run("timestep auto safety=0.02\n");
+    Model& m = r.model();
+    const auto vertical = [&] { return three ? m.blocks3.body[1].velocity.z() : m.blocks.vy[1]; };
+    // The force the joint still carries.
+    const auto carried = [&] {
+      double f = 0.0;
+      for (const Contact3& c : m.contacts3) f += c.force.norm();
+      for (size_t i = 0; i < m.contacts.size(); ++i) f += m.contacts.force[i].norm();
+      return f;
+    };
+    // Until the block has met the joint and left it again.
+    bool touched = false;
+    while (m.cycle < 200000 && !(touched && carried() == 0.0)) {
+      r.run("step 1");
+      touched = touched || carried() > 0.0;
+    }
+    QVERIFY(touched && carried() == 0.0);
+    const double e = vertical(), expected = std::exp(-M_PI * zeta / std::sqrt(1 - zeta * zeta));
+    qInfo("rebound %.5f m/s, e = %.5f", e, expected);
+    QVERIFY(std::abs(e - expected) < 0.02 * expected);
+  }
   // Every damping mode comes to the same static answer, the elastic settlement mg / k.
   void dampingModesReachTheStaticSettlement_data() {
     QTest::addColumn<QString>("mode");

@@ -23,6 +23,13 @@ inline Vec2 point_velocity(const Blocks& B, uint32_t b, const Vec2& p) {
   return {B.vx[b] - B.omega[b] * (p.y() - B.y[b]), B.vy[b] + B.omega[b] * (p.x() - B.x[b])};
 }
 
+// The effective mass of two blocks for contact damping (a held block counts as infinite).
+double pair_mass(const Blocks& B, uint32_t a, uint32_t b) {
+  const auto inverse = [&](uint32_t k) { return B.fixity[k] == kFixAll ? 0.0 : B.inv_mass[k]; };
+  const double inv = inverse(a) + inverse(b);
+  return inv > 0.0 ? 1.0 / inv : 0.0;
+}
+
 // Whether corner v is inside block b at about the overlap's depth: its distance to b's outline
 // at least half the overlap (a toe sunk into a soft joint), not at b's edge or vertex.
 bool corner_buried(const Blocks& B, uint32_t v, uint32_t b, double overlap) {
@@ -280,8 +287,17 @@ void update_interfaces(Model& m) {
             jp.impl->update(jp, C.length[i], overlap, dus, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
             C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
-            C.force[i] = s.fn * n + s.fs * tn;
-            C.force_mag[i] = std::abs(s.fn) + std::abs(s.fs);
+            double fn = s.fn, fs = s.fs;
+            if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
+              double pair_length = 0.0;
+              for (uint32_t q = c0; q < c1; ++q) pair_length += C.length[q];
+              const Dashpot d = contact_dashpot(jp, C.length[i], C.length[i] / pair_length,
+                                                pair_mass(B, C.a[i], C.b[i]), -dv.dot(n),
+                                                dv.dot(tn), 0.0, s.flags & kSlipping);
+              fn += d.fn, fs += d.fs;
+            }
+            C.force[i] = fn * n + fs * tn;
+            C.force_mag[i] = std::abs(fn) + std::abs(fs);
           }
         }
       },

@@ -245,6 +245,17 @@ double joint_forces3(const Model& m, Contact3& c) {
     s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags;
     s.fs = st.fs * t1 + st.fs2 * t2;
     s.force = st.fn * n + s.fs;
+    if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (st.flags & kTouching)) {
+      double area = 0.0;
+      for (const SubContact& q : c.subs) area += q.area;
+      const auto inverse = [&](size_t k, const RigidBody3& body) {
+        return B.fixity[k] == kFix3All || body.mass <= 0.0 ? 0.0 : 1.0 / body.mass;
+      };
+      const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
+      const Dashpot d = contact_dashpot(jp, s.area, s.area / area, inv > 0.0 ? 1.0 / inv : 0.0,
+                                        -dv.dot(n), dv.dot(t1), dv.dot(t2), st.flags & kSlipping);
+      s.force += d.fn * n + d.fs * t1 + d.fs2 * t2;
+    }
     c.force += s.force;
     c.torque_a += ra.cross(s.force);
     c.torque_b -= rb.cross(s.force);

@@ -102,6 +102,19 @@ std::vector<std::string> joint_law_names() {
   return out;
 }
 
+Dashpot contact_dashpot(const JointProperties& p, double size, double share, double m_eff,
+                        double closing, double sliding, double sliding2, bool slipping) {
+  Dashpot d;
+  if (!(m_eff > 0.0) || !(share > 0.0)) return d;
+  const double m = m_eff * share;
+  d.fn = 2.0 * p.normal_damping * std::sqrt(p.kn * size * m) * closing;
+  if (!slipping) {
+    const double cs = 2.0 * p.shear_damping * std::sqrt(p.ks * size * m);
+    d.fs = -cs * sliding, d.fs2 = -cs * sliding2;
+  }
+  return d;
+}
+
 void JointProperties::finalize() {
   impl = find_joint_law(law);
   if (!impl) throw std::invalid_argument("unknown joint law '" + law + "'");

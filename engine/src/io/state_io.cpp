@@ -170,7 +170,8 @@ void fields(IO& io, auto& m) {
   for (auto& j : m.joints) {
     io.str(j.name), io.str(j.law), io.pod(j.kn), io.pod(j.ks), io.pod(j.friction);
     io.pod(j.cohesion), io.pod(j.tension), io.pod(j.dilation), io.pod(j.dilation_limit);
-    io.pod(j.residual_friction), io.pod(j.residual_cohesion);
+    io.pod(j.residual_friction), io.pod(j.residual_cohesion), io.pod(j.normal_damping);
+    io.pod(j.shear_damping);
   }
   io.vec(m.joint_table);
   count = m.groups.size();

@@ -214,6 +214,8 @@ void Interpreter::cmd_joint(Args& a) {
     take(a, "law", j.law);
     take_num(a, "rfriction", j.residual_friction);
     take_num(a, "rcohesion", j.residual_cohesion);
+    take_num(a, "ndamping", j.normal_damping);
+    take_num(a, "sdamping", j.shear_damping);
     done(a);
     if (j.kn <= 0.0 || j.ks <= 0.0) fail("joint '" + name + "': kn and ks must be positive");
     if (j.friction < 0.0 || j.friction >= 90.0)
@@ -222,6 +224,9 @@ void Interpreter::cmd_joint(Args& a) {
       fail("joint '" + name + "': dilation must be in [0, 90) degrees");
     if (j.cohesion < 0.0 || j.tension < 0.0 || j.dilation_limit < 0.0)
       fail("joint '" + name + "': cohesion, tension and dilation_limit cannot be negative");
+    if (!(j.normal_damping >= 0.0 && j.normal_damping < 1.0 && j.shear_damping >= 0.0 &&
+          j.shear_damping < 1.0))
+      fail("joint '" + name + "': ndamping and sdamping are fractions of critical, in [0, 1)");
     if (j.residual_friction >= 90.0 || j.residual_cohesion < 0.0)
       fail("joint '" + name + "': rfriction must be below 90 degrees and rcohesion not negative");
     if (j.law != "coulomb-residual" && (j.residual_friction >= 0.0 || j.residual_cohesion > 0.0))

@@ -42,11 +42,26 @@ struct JointProperties {
   // law=coulomb-residual: the strength of a bond once it has failed in shear (degrees, Pa; a
   // negative friction means the peak friction). Plain coulomb leaves friction only.
   double residual_friction = -1.0, residual_cohesion = 0.0;
+  // Viscous contact damping in the normal and shear directions, as fractions of the critical
+  // damping of the two blocks on the contact's springs (0: none; chapter 5.2.4 notes UDEC has
+  // none built in). The shear dashpot rests while the contact slips.
+  double normal_damping = 0.0, shear_damping = 0.0;
   // Derived when the set is defined.
   double tan_friction = 0.0, tan_dilation = 0.0, tan_residual = 0.0;
   const JointLaw* impl = nullptr;
   void finalize();  // derives the tangents and binds the law; throws on an unknown law
 };
+
+// A contact's dashpot forces (compression positive, shear on the owner block) for damping
+// ratios of the joint set: c = 2 zeta sqrt(k m_eff) for the contact's spring k = kn (ks) times
+// its size, with the pair's effective mass shared in proportion to `share` (the contact's part
+// of the pair's joint); `closing` and `sliding` are the normal closing speed and the shear
+// velocity of the owner relative to the other block.
+struct Dashpot {
+  double fn = 0.0, fs = 0.0, fs2 = 0.0;
+};
+Dashpot contact_dashpot(const struct JointProperties& p, double size, double share, double m_eff,
+                        double closing, double sliding, double sliding2, bool slipping);
 
 // The state one law call reads and writes: forces on the owner block (compression positive), the
 // normal displacement of the last call, dilation and total shear displacement, flags.
