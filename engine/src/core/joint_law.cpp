@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tessera/contact2d/contacts.hpp"
+#include "tessera/plugin.hpp"
 
 namespace tessera {
 
@@ -93,12 +94,13 @@ const JointLaw* const kLaws[] = {&kCoulomb, &kCoulombResidual};
 const JointLaw* find_joint_law(const std::string& name) {
   for (const JointLaw* l : kLaws)
     if (name == l->name()) return l;
-  return nullptr;
+  return plugin_joint_law(name);
 }
 
 std::vector<std::string> joint_law_names() {
   std::vector<std::string> out;
   for (const JointLaw* l : kLaws) out.emplace_back(l->name());
+  for (std::string& n : plugin_law_names(false)) out.push_back(std::move(n));
   return out;
 }
 

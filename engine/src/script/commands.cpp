@@ -6,6 +6,7 @@
 
 #include "tessera/core/parallel.hpp"
 #include "tessera/generation/generators.hpp"
+#include "tessera/plugin.hpp"
 #include "tessera/script/expr.hpp"
 #include "tessera/script/script.hpp"
 #include "tessera/zones/deformable.hpp"
@@ -33,9 +34,25 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"delete", &Interpreter::cmd_delete},     {"join", &Interpreter::cmd_join},
       {"check", &Interpreter::cmd_check},       {"reset", &Interpreter::cmd_reset},
       {"zone", &Interpreter::cmd_zone},         {"boundary", &Interpreter::cmd_boundary},
-      {"insitu", &Interpreter::cmd_insitu},
+      {"insitu", &Interpreter::cmd_insitu},     {"model", &Interpreter::cmd_model},
   };
   return h;
+}
+
+void Interpreter::cmd_model(Args& a) {
+  if (a.words.size() != 2 || a.words[0] != "load")
+    fail("write 'model load FILE.so' (a plug-in of joint laws or zone models)");
+  done(a);
+  const std::string path = resolve(a.words[1], true);
+  std::vector<std::string> names;
+  try {
+    names = load_plugin(path);
+  } catch (const std::runtime_error& e) {
+    fail(e.what());
+  }
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  log(names.empty() ? "model load: " + path + " is loaded already" : "model load: " + list);
 }
 
 void Interpreter::cmd_reset(Args& a) {

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "tessera/plugin.hpp"
+
 namespace tessera {
 
 namespace {
@@ -201,12 +203,13 @@ ZoneStress from_principal(const Principal& p, const std::array<double, 3>& s) {
 const ZoneModel* find_zone_model(const std::string& name) {
   for (const ZoneModel* m : kModels)
     if (name == m->name()) return m;
-  return nullptr;
+  return plugin_zone_model(name);
 }
 
 std::vector<std::string> zone_model_names() {
   std::vector<std::string> names;
   for (const ZoneModel* m : kModels) names.emplace_back(m->name());
+  for (std::string& n : plugin_law_names(true)) names.push_back(std::move(n));
   return names;
 }
 

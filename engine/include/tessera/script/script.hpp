@@ -150,6 +150,7 @@ class Interpreter {
   void cmd_vtk(Args&);
   void cmd_figure(Args&);
   void solve_fos(Args&);
+  void cmd_model(Args&);
   void cmd_save(Args&);
   void cmd_restore(Args&);
   void cmd_call(Args&);
