@@ -60,6 +60,39 @@ class TestPlugins : public QObject {
     QVERIFY(std::find(joint_law_names().begin(), joint_law_names().end(), "elastic-joint") !=
             joint_law_names().end());
   }
+  // The plug-in's zone model is the built-in elastic one written again: a zoned square under
+  // boundary stresses, 2D and 3D, gives the same state bit for bit.
+  void exampleZoneModelMatchesTheBuiltIn_data() {
+    QTest::addColumn<bool>("three");
+    QTest::newRow("2D") << false;
+    QTest::newRow("3D") << true;
+  }
+  void exampleZoneModelMatchesTheBuiltIn() {
+    QFETCH(bool, three);
+    const auto square = [&](const std::string& model) {
+      const std::string rock = "model load " TESSERA_PLUGIN_FILE
+                               "\nmaterial define rock density=2500 E=10e9 nu=0.25 model=" +
+                               model + "\n";
+      if (three)
+        return "dimension 3\ntolerance 0.01\n" + rock +
+               "block box 0,0,0 4,4,4 material=rock\nzone generate edge=1\n"
+               "boundary fix=z z=-0.001,0.001\nboundary stress=0,0,-1e6,0,0,0 z=3.999,4.001\n"
+               "step 300\n";
+      return "round 0.01\n" + rock +
+             "block 0,0 4,0 4,4 0,4 material=rock\nzone generate edge=0.5\n"
+             "boundary fix=y y=-0.001,0.001\nboundary stress=0,-1e6,0 y=3.999,4.001\nstep 300\n";
+    };
+    ScriptRun built_in, plugin;
+    built_in.run(square("elastic"));
+    plugin.run(square("plugin-elastic"));
+    const Model& m = plugin.model();
+    QVERIFY(three ? m.continuum3.zone_count() > 0 : m.continuum.zone_count() > 0);
+    QCOMPARE(tessera::test::state_hash(m), tessera::test::state_hash(built_in.model()));
+    // The load reached the zones: the vertical stress of the first zone is compressive.
+    const double vertical = three ? m.continuum3.stress[0].zz : m.continuum.stress[0].yy;
+    qInfo("first zone's vertical stress %.4g Pa", vertical);
+    QVERIFY(vertical < -1e4);
+  }
   // Loading twice registers nothing more; a missing file and a library that is no plug-in are
   // named; an unknown law suggests the loaded one.
   void badPluginsAreNamed() {
