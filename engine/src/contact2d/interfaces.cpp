@@ -251,6 +251,7 @@ void update_interfaces(Model& m) {
               const double own = B.vertex_share(blk, C.corner[i]);
               C.length[i] = std::min(C.length[i], std::max(own, C.chord[i]));
             }
+          double pair_length = -1.0;  // summed once, for contact damping
           for (uint32_t i = c0; i < c1; ++i) {
             if (C.kind[i] == kLost) {
               if (C.flags[i] & kBonded)
@@ -289,8 +290,10 @@ void update_interfaces(Model& m) {
             C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
             double fn = s.fn, fs = s.fs;
             if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
-              double pair_length = 0.0;
-              for (uint32_t q = c0; q < c1; ++q) pair_length += C.length[q];
+              if (pair_length < 0.0) {
+                pair_length = 0.0;
+                for (uint32_t q = c0; q < c1; ++q) pair_length += C.length[q];
+              }
               const Dashpot d = contact_dashpot(jp, C.length[i], C.length[i] / pair_length,
                                                 pair_mass(B, C.a[i], C.b[i]), -dv.dot(n),
                                                 dv.dot(tn), 0.0, s.flags & kSlipping);

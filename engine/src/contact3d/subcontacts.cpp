@@ -215,6 +215,17 @@ double joint_forces3(const Model& m, Contact3& c) {
   const Vec3& wb = B.omega[mb_body];
   c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
   c.force_mag = 0.0;
+  // Contact damping: the joint's area and the two bodies' effective mass, once per contact.
+  const bool damped = jp.normal_damping > 0.0 || jp.shear_damping > 0.0;
+  double area = 0.0, m_eff = 0.0;
+  if (damped) {
+    for (const SubContact& q : c.subs) area += q.area;
+    const auto inverse = [&](size_t k, const RigidBody3& body) {
+      return B.fixity[k] == kFix3All || body.mass <= 0.0 ? 0.0 : 1.0 / body.mass;
+    };
+    const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
+    m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
+  }
   double deepest = 0.0, fastest = 0.0;
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
@@ -245,15 +256,9 @@ double joint_forces3(const Model& m, Contact3& c) {
     s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags;
     s.fs = st.fs * t1 + st.fs2 * t2;
     s.force = st.fn * n + s.fs;
-    if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (st.flags & kTouching)) {
-      double area = 0.0;
-      for (const SubContact& q : c.subs) area += q.area;
-      const auto inverse = [&](size_t k, const RigidBody3& body) {
-        return B.fixity[k] == kFix3All || body.mass <= 0.0 ? 0.0 : 1.0 / body.mass;
-      };
-      const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
-      const Dashpot d = contact_dashpot(jp, s.area, s.area / area, inv > 0.0 ? 1.0 / inv : 0.0,
-                                        -dv.dot(n), dv.dot(t1), dv.dot(t2), st.flags & kSlipping);
+    if (damped && (st.flags & kTouching)) {
+      const Dashpot d = contact_dashpot(jp, s.area, s.area / area, m_eff, -dv.dot(n), dv.dot(t1),
+                                        dv.dot(t2), st.flags & kSlipping);
       s.force += d.fn * n + d.fs * t1 + d.fs2 * t2;
     }
     c.force += s.force;
