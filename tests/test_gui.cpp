@@ -1143,6 +1143,19 @@ class TestGui : public QObject {
     const qsizetype journal = w.journal().size();
     QPointer<CommandDialog> d = w.openDialog("material");
     QVERIFY(d);
+    // Every zone model and joint law the engine has is offered.
+    QVERIFY(d->choices("model").contains("strain-softening"));
+    QVERIFY(d->choices("model").contains("transversely-isotropic"));
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      d->grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/material_dialog.png");
+    {
+      QPointer<CommandDialog> joint = w.openDialog("joint");
+      QVERIFY(joint && joint->choices("law").contains("barton-bandis"));
+      QVERIFY(joint->choices("law").contains("cy"));
+      if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+        joint->grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/joint_dialog.png");
+      joint->close();
+    }
     d->setValue("#name", "soft");
     d->setValue("density", "-5");
     QSignalSpy finished(&w, &MainWindow::commandFinished);

@@ -59,6 +59,24 @@ class TestScriptErrors : public QObject {
                          "rfriction=95"),
                 "rfriction must be below 90 degrees"));
   }
+  void badNonlinearJointIsNamed() {
+    QVERIFY(has(error_of("joint define j law=barton-bandis kn=1e9 ks=1e9 friction=28 jrc=10 "
+                         "jcs=1e8"),
+                "test:1: joint 'j' (law=barton-bandis) needs vm="));
+    QVERIFY(has(error_of("joint define j law=barton-bandis kn=1e9 ks=1e9 friction=28 jrc=25 "
+                         "jcs=1e8 vm=1e-3"),
+                "jrc must be in [0, 20]"));
+    QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=28 jrc=10"),
+                "belong to law=barton-bandis"));
+    QVERIFY(has(error_of("joint define j law=cy kn=1e9 ks=1e9 friction=30 ifriction=40"),
+                "roughness (m) must be positive"));
+    QVERIFY(has(error_of("joint define j law=cy kn=1e9 ks=1e9 friction=30 en=1.2"),
+                "en and es must be in [0, 1)"));
+    QVERIFY(has(error_of("joint define j law=cy kn=1e9 ks=1e9 friction=30 cohesion=1e5"),
+                "law=cy has no cohesion"));
+    QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 roughness=1e-3"),
+                "belong to law=cy"));
+  }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
     QVERIFY(has(e, "test:1:"));
@@ -319,6 +337,40 @@ class TestScriptErrors : public QObject {
                                               "block 0,0 1,0 1,1 0,1 material=soft\n"
                                               "zone generate edge=1e-4"),
                 "test:6: block 1: zones of size"));
+  }
+  // The strain-softening, ubiquitous-joint and transversely isotropic models' input.
+  void zoneModelInputIsChecked() {
+    const std::string m = std::string(kBase) + "material define soft density=2000 ";
+    const std::string ss = m + "E=1e9 nu=0.2 model=strain-softening friction=30 cohesion=1e6 ";
+    QVERIFY(has(error_of(ss + "ctable=0,1e6,0.01"),
+                "test:4: material 'soft': ctable needs pairs strain,value (3 numbers given)"));
+    QVERIFY(has(error_of(ss + "ftable=0,30,0.02,25,0.01,20"),
+                "test:4: material 'soft': zone material 'soft': ftable's plastic strains must "
+                "increase"));
+    QVERIFY(has(error_of(ss + "ctable=0,1e6,0.01,-5"), "ctable's values cannot be negative"));
+    QVERIFY(has(error_of(ss + "ftable=0,30,0.01,95"), "ftable's angles must be below 90"));
+    QVERIFY(has(error_of(m + "E=1e9 nu=0.2 ctable=0,1e6,0.01,0"),
+                "ctable, ftable, dtable and ttable belong to model=strain-softening"));
+    const std::string uj = m + "E=1e9 nu=0.2 model=ubiquitous-joint friction=30 cohesion=1e6 ";
+    QVERIFY(has(error_of(uj + "jcohesion=1e5 jangle=30"),
+                "test:4: material 'soft' (ubiquitous-joint) needs jfriction="));
+    QVERIFY(has(error_of(uj + "jfriction=20"),
+                "(ubiquitous-joint) needs its plane: jangle= (2D) or jdip= and jdipdir= (3D)"));
+    QVERIFY(has(error_of(uj + "jfriction=20 jdip=30"), "needs both jdip= and jdipdir="));
+    QVERIFY(has(error_of(uj + "jfriction=20 jangle=10 jdip=30 jdipdir=0"),
+                "give jangle= (2D) or jdip= and jdipdir= (3D), not both"));
+    QVERIFY(has(error_of(uj + "jfriction=20 jdilation=30 jangle=10"),
+                "jdilation in [0, jfriction] degrees"));
+    QVERIFY(has(error_of(m + "E=1e9 nu=0.2 jfriction=20"),
+                "jfriction, jcohesion, jtension and jdilation belong to model=ubiquitous-joint"));
+    const std::string ti = m + "model=transversely-isotropic ";
+    QVERIFY(has(error_of(ti + "E1=2e9 E3=1e9 nu12=0.2 G13=1e9 jangle=0"),
+                "test:4: material 'soft' (transversely-isotropic) needs nu13="));
+    QVERIFY(has(error_of(ti + "E=1e9 nu=0.2 E1=2e9 E3=1e9 nu12=0.2 nu13=0.2 G13=1e9 jangle=0"),
+                "takes E1, E3, nu12, nu13 and G13, not E and nu or K and G"));
+    QVERIFY(has(error_of(ti + "E1=2e9 E3=1e9 nu12=0.2 nu13=0.2 G13=1e9"), "needs its plane"));
+    QVERIFY(has(error_of(ti + "E1=1e9 E3=10e9 nu12=0.2 nu13=0.5 G13=1e9 jangle=0"),
+                "make no stable material"));
   }
   // With rollback on, a failing command leaves the model as it was before it.
   void rollbackKeepsTheModel() {

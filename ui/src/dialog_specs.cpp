@@ -14,12 +14,24 @@ DialogSpec spec(const QString& name) {
              {"density", "Density", "kg/m³", "2600", ""},
              {"E", "Young's modulus", "Pa", "", "deformable blocks only"},
              {"nu", "Poisson's ratio", "", "", ""},
-             {"model", "Zone model", "", "", "elastic, mohr-coulomb, drucker-prager or null",
-              "zone models"},
+             {"model", "Zone model", "", "", "empty: elastic", "zone models"},
              {"friction", "Friction angle", "deg", "", ""},
              {"cohesion", "Cohesion", "Pa", "", ""},
              {"tension", "Tensile strength", "Pa", "", ""},
-             {"dilation", "Dilation angle", "deg", "", ""}}};
+             {"dilation", "Dilation angle", "deg", "", ""},
+             {"ctable", "Cohesion table (strain-softening)", "", "", "strain,Pa pairs"},
+             {"ftable", "Friction table (strain-softening)", "", "", "strain,deg pairs"},
+             {"jfriction", "Joint friction (ubiquitous-joint)", "deg", "", ""},
+             {"jcohesion", "Joint cohesion (ubiquitous-joint)", "Pa", "", ""},
+             {"jangle", "Plane angle from x (2D)", "deg", "",
+              "ubiquitous-joint, transversely-isotropic"},
+             {"jdip", "Plane dip (3D)", "deg", "", ""},
+             {"jdipdir", "Plane dip direction (3D)", "deg", "", "clockwise from north (+y)"},
+             {"E1", "E in the plane (transversely-isotropic)", "Pa", "", "instead of E and nu"},
+             {"E3", "E across the plane", "Pa", "", ""},
+             {"nu12", "Poisson's ratio in the plane", "", "", ""},
+             {"nu13", "Poisson's ratio across", "", "", ""},
+             {"G13", "Shear modulus across", "Pa", "", ""}}};
   if (name == "joint")
     return {"Joint properties",
             "joint define",
@@ -29,7 +41,14 @@ DialogSpec spec(const QString& name) {
              {"friction", "Friction angle", "deg", "30", ""},
              {"cohesion", "Cohesion", "Pa", "", ""},
              {"tension", "Tensile strength", "Pa", "", ""},
-             {"dilation", "Dilation angle", "deg", "", ""}}};
+             {"dilation", "Dilation angle", "deg", "", ""},
+             {"law", "Joint law", "", "", "empty: coulomb", "joint laws"},
+             {"ifriction", "Initial friction (cy)", "deg", "", "decays to the friction angle"},
+             {"roughness", "Roughness length (cy)", "m", "", "plastic shear to lose roughness"},
+             {"jrc", "JRC (barton-bandis)", "", "", "joint roughness coefficient"},
+             {"jcs", "JCS (barton-bandis)", "Pa", "", "joint wall compressive strength"},
+             {"vm", "Maximum closure (barton-bandis)", "m", "", "kn is then the initial stiffness"},
+             {"dpeak", "Shear at peak (barton-bandis)", "m", "", "empty: Barton's for 1 m"}}};
   if (name == "jset")
     return {"Joint set",
             "jset",

@@ -7,11 +7,13 @@
 #include <algorithm>
 
 #include "dialog_specs.hpp"
+#include "tessera/core/joint_law.hpp"
 #include "tessera/generation/generators.hpp"
 #include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/console_widget.hpp"
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/vtk_view.hpp"
+#include "tessera/zones/zone_model.hpp"
 
 namespace tessera::ui {
 
@@ -170,7 +172,12 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
   d->setChoices("materials", materials);
   d->setChoices("joint properties", joints);
   d->setChoices("joint names", names);
-  d->setChoices("zone models", {"elastic", "mohr-coulomb", "drucker-prager", "null"});
+  // The laws the engine knows, plug-ins' included.
+  QStringList zone_models, joint_laws;
+  for (const std::string& n : zone_model_names()) zone_models << QString::fromStdString(n);
+  for (const std::string& n : joint_law_names()) joint_laws << QString::fromStdString(n);
+  d->setChoices("zone models", zone_models);
+  d->setChoices("joint laws", joint_laws);
   // OK runs the command; the dialog stays open until it has run, and shows its error if it
   // fails (onFinished).
   connect(d, &CommandDialog::submitted, this, [this, d, name] {

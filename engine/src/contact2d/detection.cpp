@@ -204,6 +204,14 @@ void detect_contacts(Model& m) {
     }
     fresh.emplace_back(static_cast<uint32_t>(joint), tag);
   }
+  // Contacts dropped while dilation held them loaded (for a warning).
+  {
+    std::vector<uint8_t> kept(old.size(), 0);
+    for (uint32_t k : from)
+      if (k != kNew) kept[k] = 1;
+    for (size_t i = 0; i < old.size(); ++i)
+      if (!kept[i]) m.note_lost(old.flags[i], old.fn[i], old.dilation[i]);
+  }
   const size_t count = found.size();
   Contacts next;
   Contacts::each_array(

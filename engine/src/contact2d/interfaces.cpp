@@ -282,12 +282,12 @@ void update_interfaces(Model& m) {
                      : Vec2(point_velocity(B, C.a[i], C.point[i]) -
                             point_velocity(B, C.b[i], C.point[i]));
             const double dus = dv.dot(tn) * dt;
-            JointState s{C.fn[i],       C.fs[i],         C.un_prev[i],
-                         C.dilation[i], C.shear_disp[i], C.flags[i]};
+            JointState s{C.fn[i],    C.fs[i], C.un_prev[i], C.dilation[i], C.shear_disp[i],
+                         C.flags[i], 0.0,     0.0,          C.plastic[i]};
             const JointProperties& jp = m.joints[C.joint[i]];
             jp.impl->update(jp, C.length[i], overlap, dus, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
-            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
+            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags, C.plastic[i] = s.plastic;
             double fn = s.fn, fs = s.fs;
             if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
               if (pair_length < 0.0) {

@@ -63,6 +63,7 @@ void detect_contacts3(Model& m) {
   std::vector<Contact3> next;
   size_t j = 0;
   auto& old = m.contacts3;
+  std::vector<uint8_t> kept(old.size(), 0);
   for (const auto& [lo, hi] : broad_phase3(block_boxes3(B, 0.5 * tol))) {
     const auto mlo = static_cast<size_t>(B.master[lo]), mhi = static_cast<size_t>(B.master[hi]);
     // Pieces of one body never touch; nor do two held bodies (a deformable block is not held).
@@ -71,6 +72,7 @@ void detect_contacts3(Model& m) {
     if (fit.gap > tol) continue;
     while (j < old.size() && std::make_pair(old[j].a, old[j].b) < std::make_pair(lo, hi)) ++j;
     if (j < old.size() && old[j].a == lo && old[j].b == hi) {
+      kept[j] = 1;
       next.push_back(std::move(old[j]));
     } else {
       Contact3 c;
@@ -89,6 +91,9 @@ void detect_contacts3(Model& m) {
     Contact3& c = next.back();
     c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
   }
+  for (size_t i = 0; i < old.size(); ++i)
+    if (!kept[i])
+      for (const SubContact& s : old[i].subs) m.note_lost(s.flags, s.fn, s.dilation);
   m.contacts3 = std::move(next);
   m.build_block_contacts();
   m.det_pos3.resize(B.size()), m.det_q3.resize(B.size());

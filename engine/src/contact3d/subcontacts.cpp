@@ -32,6 +32,7 @@ void carry_state(const Model& m, const Contact3& c, SubContact& s,
   used[static_cast<size_t>(match)] = 1;
   s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
   s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags, s.closure = o.closure;
+  s.plastic = o.plastic;
 }
 
 namespace {
@@ -250,10 +251,11 @@ double joint_forces3(const Model& m, Contact3& c) {
     const Vec3 dv = s.node < 0 ? Vec3((ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb)))
                                : Vec3(side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1));
     fastest = std::max(fastest, dv.squaredNorm());
-    JointState st{s.fn, fs.dot(t1), s.un_prev, s.dilation, s.sd1, s.flags, fs.dot(t2), s.sd2};
+    JointState st{s.fn,    fs.dot(t1), s.un_prev, s.dilation, s.sd1,
+                  s.flags, fs.dot(t2), s.sd2,     s.plastic};
     jp.impl->update(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
     s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
-    s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags;
+    s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags, s.plastic = st.plastic;
     s.fs = st.fs * t1 + st.fs2 * t2;
     s.force = st.fn * n + s.fs;
     if (damped && (st.flags & kTouching)) {

@@ -21,8 +21,8 @@ size_t preload_contacts3(Model& m, const StressField& field) {
   const double shut = 1e-3 * m.tolerance();
   size_t loaded = 0;
   for (Contact3& c : m.contacts3) {
-    const double kn = m.joints[c.joint].kn;
-    if (!(kn > 0.0)) continue;
+    const JointProperties& jp = m.joints[c.joint];
+    if (!(jp.kn > 0.0)) continue;
     const Vec3 n = c.normal;
     bool any = false;
     for (SubContact& s : c.subs) {
@@ -34,7 +34,7 @@ size_t preload_contacts3(Model& m, const StressField& field) {
                     t.xz * n.x() + t.yz * n.y() + t.zz * n.z());
       const double normal = -n.dot(sn);
       if (normal <= 0.0) continue;
-      s.closure = normal / kn + s.gap;
+      s.closure = jp.impl->closure(jp, normal) + s.gap;
       s.un_prev = s.dilation, s.fn = 0.0;
       s.fs = s.area * (-sn - normal * n);
       any = true;
@@ -54,8 +54,8 @@ size_t preload_contacts(Model& m, const StressField& field) {
   const double shut = 1e-3 * m.tolerance();
   size_t loaded = 0;
   for (size_t i = 0; i < C.size(); ++i) {
-    const double kn = m.joints[C.joint[i]].kn;
-    if (C.kind[i] == kLost || C.gap[i] > shut || !(kn > 0.0)) continue;
+    const JointProperties& jp = m.joints[C.joint[i]];
+    if (C.kind[i] == kLost || C.gap[i] > shut || !(jp.kn > 0.0)) continue;
     const ZoneStress s = field.at(C.point[i].y());
     // Traction on block a, whose outward normal is -n: t = -sigma n (compression positive).
     const Vec2 n = C.normal[i], t = perp(n);
@@ -63,7 +63,7 @@ size_t preload_contacts(Model& m, const StressField& field) {
     const double normal = -n.dot(sn), shear = -t.dot(sn);
     if (normal <= 0.0) continue;
     // Closure measured from the drawn gap, so that the next law call gives exactly normal * L.
-    C.closure[i] = normal / kn + C.gap[i];
+    C.closure[i] = jp.impl->closure(jp, normal) + C.gap[i];
     C.un_prev[i] = C.dilation[i];
     C.fn[i] = 0.0;
     C.fs[i] = shear;

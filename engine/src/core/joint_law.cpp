@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "nonlinear_laws.hpp"
 #include "tessera/contact2d/contacts.hpp"
 #include "tessera/plugin.hpp"
 
@@ -87,7 +88,7 @@ class CoulombLaw final : public JointLaw {
 };
 
 const CoulombLaw kCoulomb(false), kCoulombResidual(true);
-const JointLaw* const kLaws[] = {&kCoulomb, &kCoulombResidual};
+const JointLaw* const kLaws[] = {&kCoulomb, &kCoulombResidual, &cy_law(), &barton_bandis_law()};
 
 }  // namespace
 
@@ -124,6 +125,9 @@ void JointProperties::finalize() {
   tan_dilation = std::tan(dilation * std::numbers::pi / 180.0);
   tan_residual = residual_friction < 0.0 ? tan_friction
                                          : std::tan(residual_friction * std::numbers::pi / 180.0);
+  phi_initial = initial_friction < 0.0 ? friction : initial_friction;
+  peak_disp = dpeak > 0.0 ? dpeak : lj / 500.0 * std::pow(jrc / lj, 0.33);
+  impl->stiffness_bounds(*this, kn_max, ks_max);
 }
 
 }  // namespace tessera

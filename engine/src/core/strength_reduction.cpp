@@ -20,12 +20,28 @@ double reduced_friction(double degrees, double f) {
 
 template <class P>
 void reduce(P& p, double f) {
+  // The nonlinear joint laws: their whole shear strength divided by f.
+  if constexpr (std::is_same_v<P, JointProperties>) {
+    if (p.law == "cy" || p.law == "barton-bandis") {
+      p.strength_divisor *= f;
+      p.finalize();
+      return;
+    }
+  }
   p.friction = reduced_friction(p.friction, f);
   p.cohesion /= f;
   p.tension /= f;
   if constexpr (std::is_same_v<P, JointProperties>) {
     if (p.residual_friction >= 0.0) p.residual_friction = reduced_friction(p.residual_friction, f);
     p.residual_cohesion /= f;
+  }
+  // Zones: the plane of weakness and the strain-softening tables too.
+  if constexpr (std::is_same_v<P, ZoneProperties>) {
+    p.jfriction = reduced_friction(p.jfriction, f);
+    p.jcohesion /= f, p.jtension /= f, p.jdilation = std::min(p.jdilation, p.jfriction);
+    for (size_t k = 1; k < p.ftable.size(); k += 2) p.ftable[k] = reduced_friction(p.ftable[k], f);
+    for (auto* t : {&p.ctable, &p.ttable})
+      for (size_t k = 1; k < t->size(); k += 2) (*t)[k] /= f;
   }
   p.finalize();
 }

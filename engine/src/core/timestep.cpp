@@ -12,13 +12,13 @@ namespace tessera {
 
 double stiffest_joint(const Model& m) {
   double k = 0.0;
-  for (const JointProperties& j : m.joints) k = std::max({k, j.kn, j.ks});
+  for (const JointProperties& j : m.joints) k = std::max({k, j.kn_max, j.ks_max});
   return k;
 }
 
 double stiffest_joint_pair(const Model& m) {
   double k = 0.0;
-  for (const JointProperties& j : m.joints) k = std::max(k, j.kn + j.ks);
+  for (const JointProperties& j : m.joints) k = std::max(k, j.kn_max + j.ks_max);
   return k;
 }
 

@@ -81,7 +81,7 @@ void check_contacts2(Checker& c, const Model& m) {
   c.size(C.joint, n, "contact joints"), c.size(C.tag, n, "contact tags");
   c.size(C.normal, n, "contact normals"), c.size(C.point, n, "contact points");
   for (auto* v : {&C.gap, &C.chord, &C.length, &C.fn, &C.fs, &C.un_prev, &C.dilation, &C.shear_disp,
-                  &C.closure, &C.force_mag})
+                  &C.closure, &C.plastic, &C.force_mag})
     c.size(*v, n, "a contact array");
   c.size(C.force, n, "contact forces");
   if (!c.ok()) return;
@@ -136,10 +136,12 @@ void check_blocks3(Checker& c, const Model& m) {
   c.size(Z.mass, nn, "3D node masses"), c.size(Z.inertia, nn, "3D node inertias");
   c.size(Z.fixity, nn, "3D node fixity"), c.size(Z.fixed_vel, nn, "3D node fixed velocities");
   c.size(Z.stress, nz, "3D zone stresses"), c.size(Z.state, nz, "3D zone states");
+  c.size(Z.plastic, nz, "3D zone plastic strains");
   c.size(Z.material, nz, "3D zone materials");
   if (!Z.mid.empty()) {
     c.size(Z.mid, nz, "3D mid-edge nodes"), c.size(Z.gp_stress, nz, "3D integration points");
     c.size(Z.gp_state, nz, "3D integration point states");
+    c.size(Z.gp_plastic, nz, "3D integration point plastic strains");
     c.size(Z.edge_node, nn, "3D mid-edge node flags");
   }
   if (!c.ok()) return;
@@ -217,6 +219,7 @@ void check_rest(Checker& c, const Model& m) {
   c.size(Z.mass, nn, "node masses"), c.size(Z.inertia, nn, "node inertias");
   c.size(Z.fixity, nn, "node fixity"), c.size(Z.fixed_vel, nn, "node fixed velocities");
   c.size(Z.stress, nz, "zone stresses"), c.size(Z.state, nz, "zone states");
+  c.size(Z.plastic, nz, "zone plastic strains");
   c.size(Z.material, nz, "zone materials");
   for (size_t z = 0; z < nz && c.ok(); ++z) {
     for (uint32_t k : Z.zones[z]) c.require(k < nn, name("zone", z) + " names a missing node");

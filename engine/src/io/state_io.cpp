@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 11;
+constexpr uint32_t kVersion = 12;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -26,7 +26,8 @@ static_assert(sizeof(Vec2) == 2 * sizeof(double));
 template <class F>
 void members(const SubContact& s, F f) {
   f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
-  f(s.sd2), f(s.fs), f(s.flags), f(s.force), f(s.node), f(s.node_side), f(s.tri), f(s.weight);
+  f(s.sd2), f(s.fs), f(s.flags), f(s.plastic), f(s.force), f(s.node), f(s.node_side), f(s.tri),
+      f(s.weight);
   f(s.closure);
 }
 template <class F>
@@ -153,7 +154,7 @@ void fields(IO& io, auto& m) {
       io.vec(C.flags);
   io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
-  io.vec(C.shear_disp), io.vec(C.closure);
+  io.vec(C.shear_disp), io.vec(C.closure), io.vec(C.plastic);
   io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
   io.items(count);
@@ -163,6 +164,10 @@ void fields(IO& io, auto& m) {
     auto& z = mat.zone;
     io.str(z.name), io.str(z.model), io.pod(z.density), io.pod(z.bulk), io.pod(z.shear);
     io.pod(z.friction), io.pod(z.cohesion), io.pod(z.tension), io.pod(z.dilation);
+    io.vec(z.ctable), io.vec(z.ftable), io.vec(z.dtable), io.vec(z.ttable);
+    io.pod(z.jfriction), io.pod(z.jcohesion), io.pod(z.jtension), io.pod(z.jdilation);
+    io.pod(z.e1), io.pod(z.e3), io.pod(z.nu12), io.pod(z.nu13), io.pod(z.g13);
+    io.pod(z.jangle), io.pod(z.jdip), io.pod(z.jdipdir), io.pod(z.orientation);
   }
   count = m.joints.size();
   io.items(count);
@@ -171,7 +176,9 @@ void fields(IO& io, auto& m) {
     io.str(j.name), io.str(j.law), io.pod(j.kn), io.pod(j.ks), io.pod(j.friction);
     io.pod(j.cohesion), io.pod(j.tension), io.pod(j.dilation), io.pod(j.dilation_limit);
     io.pod(j.residual_friction), io.pod(j.residual_cohesion), io.pod(j.normal_damping);
-    io.pod(j.shear_damping);
+    io.pod(j.shear_damping), io.pod(j.en), io.pod(j.es), io.pod(j.sref), io.pod(j.smax);
+    io.pod(j.initial_friction), io.pod(j.roughness), io.pod(j.jrc), io.pod(j.jcs), io.pod(j.vm);
+    io.pod(j.dpeak), io.pod(j.lj), io.pod(j.kn_cap), io.pod(j.strength_divisor);
   }
   io.vec(m.joint_table);
   count = m.groups.size();
@@ -199,7 +206,8 @@ void fields(IO& io, auto& m) {
   io.vec(Z.pos), io.vec(Z.pos0), io.vec(Z.vel), io.vec(Z.force), io.vec(Z.applied);
   io.vec(Z.mass), io.vec(Z.inertia), io.vec(Z.fixity), io.vec(Z.fixed_vel), io.vec(Z.zones),
       io.vec(Z.stress);
-  io.vec(Z.state), io.vec(Z.material), io.pod(Z.local_damping), io.pod(Z.dt), io.pod(Z.time);
+  io.vec(Z.state), io.vec(Z.plastic), io.vec(Z.material), io.pod(Z.local_damping);
+  io.pod(Z.dt), io.pod(Z.time);
   io.pod(Z.cycle), io.pod(Z.ratio), io.vec(m.det_node);
   // 3D models.
   io.pod(m.dim), io.pod(S.gravity3.x()), io.pod(S.gravity3.y()), io.pod(S.gravity3.z());
@@ -217,8 +225,9 @@ void fields(IO& io, auto& m) {
   auto& Z3 = m.continuum3;
   io.vec(Z3.pos), io.vec(Z3.pos0), io.vec(Z3.vel), io.vec(Z3.force), io.vec(Z3.applied);
   io.vec(Z3.mass), io.vec(Z3.inertia), io.vec(Z3.fixity), io.vec(Z3.fixed_vel);
-  io.vec(Z3.zones), io.vec(Z3.stress), io.vec(Z3.state), io.vec(Z3.material);
-  io.vec(Z3.mid), io.vec(Z3.gp_stress), io.vec(Z3.gp_state), io.vec(Z3.edge_node);
+  io.vec(Z3.zones), io.vec(Z3.stress), io.vec(Z3.state), io.vec(Z3.plastic), io.vec(Z3.material);
+  io.vec(Z3.mid), io.vec(Z3.gp_stress), io.vec(Z3.gp_state), io.vec(Z3.gp_plastic);
+  io.vec(Z3.edge_node);
   io.pod(Z3.local_damping), io.pod(Z3.dt), io.pod(Z3.time), io.pod(Z3.cycle), io.pod(Z3.ratio);
   io.vec(m.det_node3);
   count = m.contacts3.size();

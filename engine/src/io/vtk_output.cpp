@@ -110,6 +110,8 @@ void write_contacts(const Model& m, const std::string& path) {
   array(out, "Float64", "opening", 1, n,
         [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
   array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
+  array(out, "Float64", "dilation", 1, n, [&](size_t i) { return C.dilation[i]; });
+  array(out, "Float64", "plastic_shear", 1, n, [&](size_t i) { return C.plastic[i]; });
   array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(C.flags[i]); });
   array(out, "Int32", "joint_properties", 1, n, [&](size_t i) { return C.joint[i]; });
@@ -180,6 +182,8 @@ void write_contacts3(const Model& m, const std::string& path) {
   array(out, "Float64", "area", 1, n, [&](size_t i) { return subs[i]->area; });
   array(out, "Float64", "shear_displacement", 1, n,
         [&](size_t i) { return std::hypot(subs[i]->sd1, subs[i]->sd2); });
+  array(out, "Float64", "dilation", 1, n, [&](size_t i) { return subs[i]->dilation; });
+  array(out, "Float64", "plastic_shear", 1, n, [&](size_t i) { return subs[i]->plastic; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(subs[i]->flags); });
   array(out, "Int32", "contact_type", 1, n, [&](size_t i) { return of[i]->type; });
   array(out, "Int32", "block_a", 1, n, [&](size_t i) { return B.id[of[i]->a]; });
@@ -224,6 +228,7 @@ void write_zones(const Model& m, const std::string& path) {
   array(out, "Float64", "eyy", 1, nz, [&](size_t z) { return strain(z, 1); });
   array(out, "Float64", "exy", 1, nz, [&](size_t z) { return strain(z, 2); });
   array(out, "Int32", "state", 1, nz, [&](size_t z) { return c.state[z]; });
+  array(out, "Float64", "plastic_strain", 1, nz, [&](size_t z) { return c.plastic[z]; });
   array(out, "Int32", "material", 1, nz,
         [&](size_t z) { return static_cast<int>(c.material[z]) - 1; });
   out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
@@ -273,6 +278,7 @@ void write_zones3(const Model& m, const std::string& path) {
     return v[k % 6];
   });
   array(out, "Int32", "state", 1, nz, [&](size_t z) { return c.state[z]; });
+  array(out, "Float64", "plastic_strain", 1, nz, [&](size_t z) { return c.plastic[z]; });
   array(out, "Int32", "material", 1, nz,
         [&](size_t z) { return static_cast<int>(c.material[z]) - 1; });
   out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";

@@ -153,8 +153,66 @@ void Interpreter::cmd_material(Args& a) {
     take(a, "model", model);
     take_num(a, "friction", zone.friction), take_num(a, "cohesion", zone.cohesion);
     take_num(a, "tension", zone.tension), take_num(a, "dilation", zone.dilation);
+    // Strain-softening tables: strain,value pairs of the plastic shear strain.
+    bool has_table = false;
+    for (auto [key, table] :
+         {std::pair{"ctable", &zone.ctable}, std::pair{"ftable", &zone.ftable},
+          std::pair{"dtable", &zone.dtable}, std::pair{"ttable", &zone.ttable}}) {
+      std::string v;
+      if (!take(a, key, v)) continue;
+      has_table = true;
+      for (const auto& part : split_top_level(v)) table->push_back(num(part));
+      if (table->size() % 2 != 0)
+        fail("material '" + name + "': " + key + " needs pairs strain,value (" +
+             std::to_string(table->size()) + " numbers given)");
+    }
+    // A plane of weakness and its orientation (also the plane of transverse isotropy).
+    const bool has_jfriction = take_num(a, "jfriction", zone.jfriction);
+    bool has_joint = has_jfriction;
+    has_joint |= take_num(a, "jcohesion", zone.jcohesion);
+    has_joint |= take_num(a, "jtension", zone.jtension);
+    has_joint |= take_num(a, "jdilation", zone.jdilation);
+    const bool has_angle = take_num(a, "jangle", zone.jangle);
+    const bool has_dip = take_num(a, "jdip", zone.jdip),
+               has_dd = take_num(a, "jdipdir", zone.jdipdir);
+    if (has_angle && (has_dip || has_dd))
+      fail("material '" + name + "': give jangle= (2D) or jdip= and jdipdir= (3D), not both");
+    if (has_dip != has_dd) fail("material '" + name + "' needs both jdip= and jdipdir=");
+    zone.orientation = has_angle ? 2 : has_dip ? 3 : 0;
+    // Transversely isotropic constants.
+    bool has_ti = false;
+    std::string ti_missing;
+    for (auto [key, value] :
+         {std::pair{"E1", &zone.e1}, std::pair{"E3", &zone.e3}, std::pair{"nu12", &zone.nu12},
+          std::pair{"nu13", &zone.nu13}, std::pair{"G13", &zone.g13}}) {
+      if (take_num(a, key, *value))
+        has_ti = true;
+      else if (ti_missing.empty())
+        ti_missing = key;
+    }
     done(a);
-    if (has_e || has_nu || has_k || has_g) {
+    if (has_table && model != "strain-softening")
+      fail("material '" + name + "': ctable, ftable, dtable and ttable belong to " +
+           "model=strain-softening");
+    if (has_joint && model != "ubiquitous-joint")
+      fail("material '" + name + "': jfriction, jcohesion, jtension and jdilation belong to " +
+           "model=ubiquitous-joint");
+    if (zone.orientation && model != "ubiquitous-joint" && model != "transversely-isotropic")
+      fail("material '" + name + "': jangle, jdip and jdipdir belong to model=ubiquitous-joint " +
+           "and model=transversely-isotropic");
+    if (has_ti && model != "transversely-isotropic")
+      fail("material '" + name + "': E1, E3, nu12, nu13 and G13 belong to " +
+           "model=transversely-isotropic");
+    if (model == "transversely-isotropic") {
+      if (has_e || has_nu || has_k || has_g)
+        fail("material '" + name + "': model=transversely-isotropic takes E1, E3, nu12, nu13 " +
+             "and G13, not E and nu or K and G");
+      if (!ti_missing.empty())
+        fail("material '" + name + "' (transversely-isotropic) needs " + ti_missing + "=");
+    }
+    if (model == "ubiquitous-joint" && !has_jfriction)
+      fail("material '" + name + "' (ubiquitous-joint) needs jfriction=");
+    if (has_e || has_nu || has_k || has_g || has_ti) {
       if ((has_e || has_nu) && (has_k || has_g)) fail("give E and nu, or K and G, not both pairs");
       if (has_e != has_nu) fail("material '" + name + "' needs both E and nu");
       if (has_k != has_g) fail("material '" + name + "' needs both K and G");
@@ -207,6 +265,34 @@ void Interpreter::cmd_material(Args& a) {
   }
 }
 
+namespace {
+
+// The parameters of law=cy and law=barton-bandis in range (std::invalid_argument names the fault).
+void check_cy(const JointProperties& j) {
+  const std::string at = "joint '" + j.name + "': ";
+  if (!(j.en >= 0.0 && j.en < 1.0 && j.es >= 0.0 && j.es < 1.0))
+    throw std::invalid_argument(at + "the exponents en and es must be in [0, 1)");
+  if (!(j.sref > 0.0) || j.smax < 0.0)
+    throw std::invalid_argument(at + "sref must be positive and smax not negative");
+  if (j.initial_friction >= 90.0 || (j.initial_friction >= 0.0 && j.initial_friction < j.friction))
+    throw std::invalid_argument(at + "ifriction must lie between friction and 90 degrees");
+  if (j.roughness < 0.0 || (j.initial_friction > j.friction && !(j.roughness > 0.0)))
+    throw std::invalid_argument(at +
+                                "roughness (m) must be positive when ifriction is above friction");
+}
+
+void check_barton_bandis(const JointProperties& j) {
+  const std::string at = "joint '" + j.name + "': ";
+  if (!(j.jrc >= 0.0 && j.jrc <= 20.0)) throw std::invalid_argument(at + "jrc must be in [0, 20]");
+  if (!(j.jcs > 0.0 && j.vm > 0.0))
+    throw std::invalid_argument(at + "jcs (Pa) and vm (m) must be positive");
+  if (j.dpeak < 0.0 || !(j.lj > 0.0) || (j.kn_cap != 0.0 && !(j.kn_cap > j.kn)))
+    throw std::invalid_argument(at +
+                                "dpeak cannot be negative, lj must be positive and knmax above kn");
+}
+
+}  // namespace
+
 void Interpreter::cmd_joint(Args& a) {
   if (a.words.size() < 2)
     fail("write 'joint define NAME kn=.. ks=.. friction=..' or 'joint assign NAME'");
@@ -221,14 +307,29 @@ void Interpreter::cmd_joint(Args& a) {
     auto need = [&](const char* key, double& v) {
       if (!take_num(a, key, v) && fresh) missing(a, key, "joint '" + name + "'");
     };
+    take(a, "law", j.law);
+    const bool cy = j.law == "cy", bb = j.law == "barton-bandis";
     need("kn", j.kn);
     need("ks", j.ks);
     need("friction", j.friction);
+    const bool nonlinear_keys = take_num(a, "en", j.en) | take_num(a, "es", j.es) |
+                                take_num(a, "sref", j.sref) | take_num(a, "smax", j.smax) |
+                                take_num(a, "ifriction", j.initial_friction) |
+                                take_num(a, "roughness", j.roughness);
+    const bool has_jrc = take_num(a, "jrc", j.jrc), has_jcs = take_num(a, "jcs", j.jcs);
+    const bool has_vm = take_num(a, "vm", j.vm);
+    const bool bb_keys = has_jrc | has_jcs | has_vm | take_num(a, "dpeak", j.dpeak) |
+                         take_num(a, "lj", j.lj) | take_num(a, "knmax", j.kn_cap);
+    if (bb && fresh) {
+      const std::string what = "joint '" + name + "' (law=barton-bandis)";
+      if (!has_jrc) missing(a, "jrc", what);
+      if (!has_jcs) missing(a, "jcs", what);
+      if (!has_vm) missing(a, "vm", what);
+    }
     take_num(a, "cohesion", j.cohesion);
     take_num(a, "tension", j.tension);
     take_num(a, "dilation", j.dilation);
     take_num(a, "dilation_limit", j.dilation_limit);
-    take(a, "law", j.law);
     take_num(a, "rfriction", j.residual_friction);
     take_num(a, "rcohesion", j.residual_cohesion);
     take_num(a, "ndamping", j.normal_damping);
@@ -248,6 +349,15 @@ void Interpreter::cmd_joint(Args& a) {
       fail("joint '" + name + "': rfriction must be below 90 degrees and rcohesion not negative");
     if (j.law != "coulomb-residual" && (j.residual_friction >= 0.0 || j.residual_cohesion > 0.0))
       fail("joint '" + name + "': rfriction and rcohesion belong to law=coulomb-residual");
+    if (nonlinear_keys && !cy)
+      fail("joint '" + name + "': en, es, sref, smax, ifriction and roughness belong to law=cy");
+    if (bb_keys && !bb)
+      fail("joint '" + name + "': jrc, jcs, vm, dpeak, lj and knmax belong to law=barton-bandis");
+    if ((cy || bb) && (j.cohesion > 0.0 || j.tension > 0.0 || j.dilation > 0.0))
+      fail("joint '" + name + "': law=" + j.law +
+           " has no cohesion, tension or dilation parameter (its dilation comes from roughness)");
+    if (cy) check_cy(j);
+    if (bb) check_barton_bandis(j);
     if (!find_joint_law(j.law))
       fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
     j.finalize();

@@ -40,7 +40,7 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   auto last = t0;
-  const uint64_t c0 = model_.cycle;
+  const uint64_t c0 = model_.cycle, lost0 = model_.lost_dilated;
   const Progress progress = [&](const Model& m) {
     if (vtk_interval_ && m.cycle % vtk_interval_ == 0) {
       if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
@@ -69,6 +69,16 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
   stages_.push_back({text_, file_, line_, c0, model_.cycle, false});
   summary_.wall_seconds += wall;
   log(what + ": " + progress_line(model_, wall));
+  if (model_.lost_dilated > lost0) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "%llu contacts held shut by joint dilation (up to %.3g m) opened beyond the "
+                  "contact tolerance (%.3g m) and were lost with their forces: raise it with "
+                  "'tolerance' above the dilation expected",
+                  static_cast<unsigned long long>(model_.lost_dilated - lost0),
+                  model_.lost_dilation, model_.tolerance());
+    warn(buf);
+  }
 }
 
 void Interpreter::warn_history_size(uint64_t cycles) {

@@ -354,13 +354,13 @@ void Interpreter::cmd_insitu(Args& a) {
   }
   Continuum& c = model_.continuum;
   initialize_stress(c, s0, g, v0);
-  // The out-of-plane stress of plane strain, unless given: nu (sxx + syy) per zone.
+  // The out-of-plane stress of plane strain, unless given: nu (sxx + syy) per zone (a
+  // transversely isotropic zone's from its compliance).
   if (!has_zz)
     for (size_t z = 0; z < c.zone_count(); ++z) {
       const ZoneProperties& p = c.materials[c.material[z]];
       if (!p.impl->solid()) continue;
-      const double nu = (3 * p.bulk - 2 * p.shear) / (2 * (3 * p.bulk + p.shear));
-      c.stress[z].zz = nu * (c.stress[z].xx + c.stress[z].yy);
+      c.stress[z].zz = plane_strain_zz(p, c.stress[z]);
     }
   // The joints: tractions of the same field on every shut contact.
   const size_t loaded = preload_contacts(model_, StressField{s0, g, v0});

@@ -97,7 +97,8 @@ uint32_t add_mesh(Continuum& c, const ZoneMesh& mesh, uint32_t material) {
   }
   for (const auto& t : mesh.triangles) {
     c.zones.push_back({first + t[0], first + t[1], first + t[2]});
-    c.stress.emplace_back(), c.state.push_back(0), c.material.push_back(material);
+    c.stress.emplace_back(), c.state.push_back(0), c.plastic.push_back(0);
+    c.material.push_back(material);
   }
   return first;
 }
@@ -113,7 +114,8 @@ uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material) {
   const size_t before = c.zones.size();
   for (const auto& t : mesh.tets) {
     c.zones.push_back({first + t[0], first + t[1], first + t[2], first + t[3]});
-    c.stress.emplace_back(), c.state.push_back(0), c.material.push_back(material);
+    c.stress.emplace_back(), c.state.push_back(0), c.plastic.push_back(0);
+    c.material.push_back(material);
   }
   // Quadratic zones: their mid-edge nodes (and every zone an entry once any zone has them).
   if (!mesh.mid.empty() || !c.mid.empty()) {
@@ -127,6 +129,7 @@ uint32_t add_mesh(Continuum3& c, const ZoneMesh3& mesh, uint32_t material) {
       c.mid.push_back(m);
     }
     c.gp_stress.resize(c.zones.size()), c.gp_state.resize(c.zones.size());
+    c.gp_plastic.resize(c.zones.size());
     c.edge_node.resize(c.node_count(), 0);
     for (const auto& m : mesh.mid)
       for (uint32_t n : m) c.edge_node[first + n] = 1;
@@ -374,7 +377,7 @@ void zone_forces(ContinuumT<D>& c) {
     }
     ZoneStress& s = c.stress[z];
     const double before = trace<D>(s);
-    p.impl->update(p, de, s, c.state[z]);
+    p.impl->update(p, de, s, c.state[z], c.plastic[z]);
     if (mixed && (c.state[z] & (kShearNow | kTensionNow))) {
       const double k_iso = D == 2 ? p.bulk + p.shear / 3.0 : p.bulk;
       w.dp[z] = (trace<D>(s) - before) / D - k_iso * trace<D>(de);

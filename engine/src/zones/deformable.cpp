@@ -178,6 +178,7 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
     kept.zones.push_back({static_cast<uint32_t>(map[t[0]]), static_cast<uint32_t>(map[t[1]]),
                           static_cast<uint32_t>(map[t[2]])});
     kept.stress.push_back(c.stress[z]), kept.state.push_back(c.state[z]);
+    kept.plastic.push_back(c.plastic[z]);
     kept.material.push_back(c.material[z]);
   }
   c = std::move(kept);

@@ -219,9 +219,12 @@ void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
   keep(c.mass, node_map), keep(c.inertia, node_map), keep(c.fixity, node_map);
   if (!c.edge_node.empty()) keep(c.edge_node, node_map);
   keep(c.zones, zone_map), keep(c.stress, zone_map), keep(c.state, zone_map);
+  keep(c.plastic, zone_map);
   keep(c.material, zone_map);
-  if (!c.mid.empty())
+  if (!c.mid.empty()) {
     keep(c.mid, zone_map), keep(c.gp_stress, zone_map), keep(c.gp_state, zone_map);
+    keep(c.gp_plastic, zone_map);
+  }
   for (auto& t : c.zones)
     for (uint32_t& n : t) n = static_cast<uint32_t>(node_map[n]);
   for (auto& t : c.mid)

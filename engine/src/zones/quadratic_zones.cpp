@@ -69,12 +69,13 @@ void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) 
   for (int k = 0; k < 10; ++k) v[k] = c.vel[nodes[k]];
   ZoneStress mean;
   uint8_t state = 0;
+  double plastic = 0;
   for (int g = 0; g < 4; ++g) {
     const std::array<Vec3, 10> grad = quadratic_gradients(dl, g);
     // The law at the point, on its strain increment.
     ZoneStress& s = c.gp_stress[z][g];
-    p.impl->update(p, strain_of(v, grad, c.dt), s, c.gp_state[z][g]);
-    state |= c.gp_state[z][g];
+    p.impl->update(p, strain_of(v, grad, c.dt), s, c.gp_state[z][g], c.gp_plastic[z][g]);
+    state |= c.gp_state[z][g], plastic += c.gp_plastic[z][g] / 4;
     mean.xx += s.xx / 4, mean.yy += s.yy / 4, mean.zz += s.zz / 4;
     mean.xy += s.xy / 4, mean.yz += s.yz / 4, mean.xz += s.xz / 4;
     // Its share of the nodal forces, f_k = -(V / 4) sigma grad N_k.
@@ -87,7 +88,7 @@ void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) 
       scale[nodes[k]] += f.norm();
     }
   }
-  c.stress[z] = mean, c.state[z] = state;
+  c.stress[z] = mean, c.state[z] = state, c.plastic[z] = plastic;
 }
 
 StrainIncrement quadratic_total_strain(const Continuum3& c, size_t z) {

@@ -9,38 +9,40 @@
 #include <stdexcept>
 
 #include "tessera/plugin.hpp"
+#include "zone_law.hpp"
 
 namespace tessera {
 
-namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+namespace zone_law {
 
-// Elastic trial stress: ds = 2G de + (K - 2G/3) tr(de) I (in plane strain dezz = 0).
-void elastic_step(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s) {
-  const double lambda = p.bulk - 2.0 * p.shear / 3.0;
+void elastic_step(double bulk, double shear, const StrainIncrement& de, ZoneStress& s) {
+  const double lambda = bulk - 2.0 * shear / 3.0;
   const double vol = de.xx + de.yy + de.zz;
-  s.xx += 2.0 * p.shear * de.xx + lambda * vol;
-  s.yy += 2.0 * p.shear * de.yy + lambda * vol;
-  s.zz += 2.0 * p.shear * de.zz + lambda * vol;
-  s.xy += 2.0 * p.shear * de.xy;
-  s.yz += 2.0 * p.shear * de.yz;
-  s.xz += 2.0 * p.shear * de.xz;
+  s.xx += 2.0 * shear * de.xx + lambda * vol;
+  s.yy += 2.0 * shear * de.yy + lambda * vol;
+  s.zz += 2.0 * shear * de.zz + lambda * vol;
+  s.xy += 2.0 * shear * de.xy;
+  s.yz += 2.0 * shear * de.yz;
+  s.xz += 2.0 * shear * de.xz;
 }
 
+namespace {
 // Mohr-Coulomb's correction of principal stresses s1 <= s2 <= s3 back onto the yield surface
 // (FLAC's formulation): shear yield fs = s1 - s3 Nphi + 2c sqrt(Nphi), tension ft = sigma_t -
-// s3, the corrections by the non-associated flow rule with Npsi. Returns false if elastic.
-bool mohr_coulomb_return(const ZoneProperties& p, double& s1, double& s2, double& s3,
-                         uint8_t& state) {
+// s3, the corrections by the non-associated flow rule with Npsi. Returns false if elastic;
+// `gamma` gets the plastic shear strain measure's increment.
+bool mohr_coulomb_return(double bulk, double shear, const Strength& p, double& s1, double& s2,
+                         double& s3, uint8_t& state, double& gamma) {
   const double sphi = std::sin(p.friction * kDeg), spsi = std::sin(p.dilation * kDeg);
   const double nphi = (1 + sphi) / (1 - sphi), npsi = (1 + spsi) / (1 - spsi);
   const double rn = std::sqrt(nphi);
   // The tensile strength cannot exceed the apex of the shear cone.
   double st = p.tension;
   if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
-  const double a1 = p.bulk + 4.0 * p.shear / 3.0, a2 = p.bulk - 2.0 * p.shear / 3.0;
+  const double a1 = bulk + 4.0 * shear / 3.0, a2 = bulk - 2.0 * shear / 3.0;
   const double fs = s1 - s3 * nphi + 2.0 * p.cohesion * rn;
   const double ft = st - s3;
+  gamma = 0;
   if (fs >= 0 && ft >= 0) return false;
   // Which failure: the line h = 0 bisects shear and tension regions near the corner.
   const double alpha_p = std::sqrt(1 + nphi * nphi) + nphi;
@@ -51,6 +53,9 @@ bool mohr_coulomb_return(const ZoneProperties& p, double& s1, double& s2, double
     s1 -= ls * (a1 - a2 * npsi);
     s2 -= ls * a2 * (1 - npsi);
     s3 -= ls * (a2 - a1 * npsi);
+    // Plastic principal strains de1 = ls, de3 = -ls Npsi.
+    const double e1 = ls, e3 = -ls * npsi, em = (e1 + e3) / 3.0;
+    gamma = std::sqrt(0.5 * (e1 - em) * (e1 - em) + 0.5 * em * em + 0.5 * (e3 - em) * (e3 - em));
     state |= kShearNow | kShearPast;
   } else {
     const double lt = ft / a1;
@@ -60,6 +65,50 @@ bool mohr_coulomb_return(const ZoneProperties& p, double& s1, double& s2, double
     state |= kTensionNow | kTensionPast;
   }
   return true;
+}
+}  // namespace
+
+// When z is a principal direction (every 2D zone, in plane strain) the principal stresses are
+// the plane's two in closed form and zz; otherwise the symmetric tensor's eigen-decomposition.
+// The correction keeps the principal directions.
+bool mohr_coulomb_correct(double bulk, double shear, const Strength& st, ZoneStress& s,
+                          uint8_t& state, double* shear_strain) {
+  double gamma = 0;
+  if (s.yz != 0 || s.xz != 0) {
+    const Principal pr = principal_3d(s);
+    std::array<double, 3> v = pr.s;
+    if (!mohr_coulomb_return(bulk, shear, st, v[0], v[1], v[2], state, gamma)) return false;
+    s = from_principal(pr, v);
+    if (shear_strain) *shear_strain = gamma;
+    return true;
+  }
+  // Principal stresses: two in the plane, zz out of it.
+  double a = 0, b = 0, angle = 0;
+  principal_2d(s, a, b, angle);
+  std::array<double, 3> sig{a, b, s.zz};
+  std::array<int, 3> order{0, 1, 2};  // which of (a, b, zz) is s1, s2, s3
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return sig[i] < sig[j]; });
+  double s1 = sig[order[0]], s2 = sig[order[1]], s3 = sig[order[2]];
+  if (!mohr_coulomb_return(bulk, shear, st, s1, s2, s3, state, gamma)) return false;
+  // Back to x, y: the in-plane principal directions are unchanged.
+  std::array<double, 3> out{};
+  out[order[0]] = s1, out[order[1]] = s2, out[order[2]] = s3;
+  const double c = std::cos(angle), sn = std::sin(angle);
+  s.xx = out[0] * c * c + out[1] * sn * sn;
+  s.yy = out[0] * sn * sn + out[1] * c * c;
+  s.xy = (out[0] - out[1]) * c * sn;
+  s.zz = out[2];
+  if (shear_strain) *shear_strain = gamma;
+  return true;
+}
+
+}  // namespace zone_law
+
+namespace {
+using zone_law::kDeg;
+
+void elastic_step(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s) {
+  zone_law::elastic_step(p.bulk, p.shear, de, s);
 }
 
 class NullModel final : public ZoneModel {
@@ -83,9 +132,7 @@ class ElasticModel final : public ZoneModel {
   }
 };
 
-// Mohr-Coulomb with tension cut-off. When z is a principal direction (every 2D zone, in plane
-// strain) the principal stresses are the plane's two in closed form and zz; otherwise the
-// symmetric tensor's eigen-decomposition. The correction keeps the principal directions.
+// Mohr-Coulomb with tension cut-off.
 class MohrCoulombModel final : public ZoneModel {
  public:
   const char* name() const override { return "mohr-coulomb"; }
@@ -93,28 +140,8 @@ class MohrCoulombModel final : public ZoneModel {
               uint8_t& state) const override {
     state &= kShearPast | kTensionPast;
     elastic_step(p, de, s);
-    if (s.yz != 0 || s.xz != 0) {
-      const Principal pr = principal_3d(s);
-      std::array<double, 3> v = pr.s;
-      if (mohr_coulomb_return(p, v[0], v[1], v[2], state)) s = from_principal(pr, v);
-      return;
-    }
-    // Principal stresses: two in the plane, zz out of it.
-    double a = 0, b = 0, angle = 0;
-    principal_2d(s, a, b, angle);
-    std::array<double, 3> sig{a, b, s.zz};
-    std::array<int, 3> order{0, 1, 2};  // which of (a, b, zz) is s1, s2, s3
-    std::sort(order.begin(), order.end(), [&](int i, int j) { return sig[i] < sig[j]; });
-    double s1 = sig[order[0]], s2 = sig[order[1]], s3 = sig[order[2]];
-    if (!mohr_coulomb_return(p, s1, s2, s3, state)) return;
-    // Back to x, y: the in-plane principal directions are unchanged.
-    std::array<double, 3> out{};
-    out[order[0]] = s1, out[order[1]] = s2, out[order[2]] = s3;
-    const double c = std::cos(angle), sn = std::sin(angle);
-    s.xx = out[0] * c * c + out[1] * sn * sn;
-    s.yy = out[0] * sn * sn + out[1] * c * c;
-    s.xy = (out[0] - out[1]) * c * sn;
-    s.zz = out[2];
+    zone_law::mohr_coulomb_correct(p.bulk, p.shear, {p.friction, p.cohesion, p.tension, p.dilation},
+                                   s, state);
   }
 };
 
@@ -166,7 +193,18 @@ const NullModel kNull;
 const ElasticModel kElastic;
 const MohrCoulombModel kMohrCoulomb;
 const DruckerPragerModel kDruckerPrager;
-const std::array<const ZoneModel*, 4> kModels{&kNull, &kElastic, &kMohrCoulomb, &kDruckerPrager};
+
+// The built-in models (those of other files through their accessors, made on first use).
+const std::array<const ZoneModel*, 7>& models() {
+  static const std::array<const ZoneModel*, 7> all{&kNull,
+                                                   &kElastic,
+                                                   &kMohrCoulomb,
+                                                   &kDruckerPrager,
+                                                   &zone_law::softening_model(),
+                                                   &zone_law::ubiquitous_model(),
+                                                   &zone_law::anisotropic_model()};
+  return all;
+}
 }  // namespace
 
 void principal_2d(const ZoneStress& s, double& s1, double& s2, double& angle) {
@@ -201,14 +239,14 @@ ZoneStress from_principal(const Principal& p, const std::array<double, 3>& s) {
 }
 
 const ZoneModel* find_zone_model(const std::string& name) {
-  for (const ZoneModel* m : kModels)
+  for (const ZoneModel* m : models())
     if (name == m->name()) return m;
   return plugin_zone_model(name);
 }
 
 std::vector<std::string> zone_model_names() {
   std::vector<std::string> names;
-  for (const ZoneModel* m : kModels) names.emplace_back(m->name());
+  for (const ZoneModel* m : models()) names.emplace_back(m->name());
   for (std::string& n : plugin_law_names(true)) names.push_back(std::move(n));
   return names;
 }
@@ -226,9 +264,12 @@ void ZoneProperties::finalize() {
   if (!impl) throw std::invalid_argument("'" + model + "' is not a zone model");
   if (!impl->solid()) return;
   if (!(density > 0)) throw std::invalid_argument("zone material '" + name + "' needs a density");
+  const bool anisotropic = model == "transversely-isotropic";
+  if (anisotropic) zone_law::anisotropic_stiffness(*this);
   if (!(bulk > 0 && shear > 0))
     throw std::invalid_argument("zone material '" + name + "' needs elastic constants");
-  if (model == "mohr-coulomb" || model == "drucker-prager") {
+  const bool softening = model == "strain-softening", ubiquitous = model == "ubiquitous-joint";
+  if (model == "mohr-coulomb" || model == "drucker-prager" || softening || ubiquitous) {
     if (!(friction >= 0 && friction < 90) || !(dilation >= 0 && dilation <= friction))
       throw std::invalid_argument("zone material '" + name +
                                   "': friction in [0, 90) and dilation in [0, friction] degrees");
@@ -236,6 +277,17 @@ void ZoneProperties::finalize() {
       throw std::invalid_argument("zone material '" + name +
                                   "': cohesion and tension cannot be negative");
   }
+  if (softening) zone_law::check_tables(*this);
+  if (ubiquitous) {
+    if (!(jfriction >= 0 && jfriction < 90) || !(jdilation >= 0 && jdilation <= jfriction))
+      throw std::invalid_argument(
+          "zone material '" + name +
+          "': jfriction in [0, 90) and jdilation in [0, jfriction] degrees");
+    if (jcohesion < 0 || jtension < 0)
+      throw std::invalid_argument("zone material '" + name +
+                                  "': jcohesion and jtension cannot be negative");
+  }
+  if (ubiquitous || anisotropic) normal = zone_law::plane_axes(*this)[2];
 }
 
 }  // namespace tessera

@@ -50,8 +50,9 @@ struct Contacts {
   // Joint law state: normal and shear force on a (compression positive), the normal
   // displacement of the last cycle, dilation and total shear displacement; `closure`, the
   // normal displacement the joint had already taken under the in-situ stress (sigma_n / kn), is
-  // added to the overlap like dilation, so that a joint drawn shut starts loaded.
-  std::vector<double> fn, fs, un_prev, dilation, shear_disp, closure;
+  // added to the overlap like dilation, so that a joint drawn shut starts loaded; the plastic
+  // shear displacement travelled (the history of law=cy and barton-bandis).
+  std::vector<double> fn, fs, un_prev, dilation, shear_disp, closure, plastic;
   // Force on block a this cycle (block b takes the opposite), and |Fn| + |Fs| for the ratio.
   std::vector<Vec2> force;
   std::vector<double> force_mag;
@@ -68,7 +69,7 @@ struct Contacts {
     f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
     f(c.flags...), f(c.joint...), f(c.tag...), f(c.normal...), f(c.point...), f(c.gap...);
     f(c.chord...), f(c.length...), f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...);
-    f(c.shear_disp...), f(c.closure...), f(c.force...), f(c.force_mag...);
+    f(c.shear_disp...), f(c.closure...), f(c.plastic...), f(c.force...), f(c.force_mag...);
   }
   template <class F>
   void for_each_array(F&& f) {

@@ -62,6 +62,7 @@ struct SubContact {
   // displacement of the last cycle, dilation, total shear displacement (two components).
   double fn = 0.0, un_prev = 0.0, dilation = 0.0, sd1 = 0.0, sd2 = 0.0;
   double closure = 0.0;  // in-situ closure sigma_n / kn added to the overlap (as 2D's)
+  double plastic = 0.0;  // plastic shear displacement travelled (law=cy, barton-bandis)
   Vec3 fs = Vec3::Zero();
   uint8_t flags = 0;
   Vec3 force = Vec3::Zero();  // on a this cycle

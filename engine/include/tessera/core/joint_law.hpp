@@ -46,8 +46,24 @@ struct JointProperties {
   // damping of the two blocks on the contact's springs (0: none; chapter 5.2.4 notes UDEC has
   // none built in). The shear dashpot rests while the contact slips.
   double normal_damping = 0.0, shear_damping = 0.0;
+  // law=cy (continuously yielding): stiffnesses kn (sigma_n / sref)^en and ks (sigma_n /
+  // sref)^es, the initial friction (degrees; negative: `friction`, the basic angle) decaying to
+  // `friction` over the roughness length (m) of plastic shear.
+  // Beyond the normal stress smax (Pa; 0: ten times sref) the stiffnesses stop growing.
+  double en = 0.0, es = 0.0, sref = 1e6, smax = 0.0, initial_friction = -1.0, roughness = 0.0;
+  // law=barton-bandis: JRC, JCS (Pa), Bandis's maximum closure vm (m; kn is the initial normal
+  // stiffness), and the shear displacement at peak (m; 0: Barton's (L/500)(JRC/L)^0.33 for the
+  // joint length lj, m). `friction` is the residual angle phi_r.
+  double jrc = 0.0, jcs = 0.0, vm = 0.0, dpeak = 0.0, lj = 1.0;
+  // Barton-Bandis: the largest tangent normal stiffness (Pa/m; 0: ten times kn), beyond which
+  // the closure stays linear; the time step uses it.
+  double kn_cap = 0.0;
+  // Both: their shear strength is divided by this (strength reduction, `solve fos`).
+  double strength_divisor = 1.0;
   // Derived when the set is defined.
   double tan_friction = 0.0, tan_dilation = 0.0, tan_residual = 0.0;
+  double kn_max = 0.0, ks_max = 0.0;          // the stiffest tangents the law reaches (time step)
+  double phi_initial = 0.0, peak_disp = 0.0;  // cy's initial friction, Barton's delta_peak
   const JointLaw* impl = nullptr;
   void finalize();  // derives the tangents and binds the law; throws on an unknown law
 };
@@ -70,6 +86,8 @@ struct JointState {
   uint8_t flags = 0;
   // Second shear component (3D): force and total displacement.
   double fs2 = 0.0, shear_disp2 = 0.0;
+  // Plastic shear displacement travelled (law=cy and barton-bandis: their strength's history).
+  double plastic = 0.0;
 };
 
 class JointLaw {
@@ -80,6 +98,13 @@ class JointLaw {
   // gap); dus, dus2: shear displacement increment of the owner relative to the other block.
   virtual void update(const JointProperties& p, double size, double overlap, double dus,
                       double dus2, JointState& s) const = 0;
+  // The normal displacement that carries a normal stress sigma_n (in-situ closure of a joint).
+  // (Defined here: a plug-in links nothing, so every virtual is inline.)
+  virtual double closure(const JointProperties& p, double sigma_n) const { return sigma_n / p.kn; }
+  // The stiffest normal and shear tangents the law reaches, per unit area (for the time step).
+  virtual void stiffness_bounds(const JointProperties& p, double& kn, double& ks) const {
+    kn = p.kn, ks = p.ks;
+  }
   // The 2D form: one shear component.
   void update(const JointProperties& p, double length, double overlap, double dus,
               JointState& s) const {

@@ -4,6 +4,7 @@
 // the run options; the cycle (step.hpp) is a set of free functions over this state.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -99,6 +100,14 @@ struct Model {
   std::vector<Eigen::Quaterniond> det_q3;
   bool detection_due = true;
   uint64_t detection_passes = 0;
+  // Contacts that detection dropped while they carried load through joint dilation (the joint
+  // opened beyond the contact tolerance), and the largest such dilation: for a warning.
+  uint64_t lost_dilated = 0;
+  double lost_dilation = 0.0;
+  void note_lost(uint8_t flags, double fn, double dilation) {
+    if (!(flags & kTouching) || !(fn > 0.0) || !(dilation > 0.0)) return;
+    ++lost_dilated, lost_dilation = std::max(lost_dilation, dilation);
+  }
 
   // How this model runs (validation, profile): not saved, copied with the model.
   RunOptions options = default_run_options();

@@ -10,9 +10,9 @@
 //
 // Layout: structure of arrays. Nodes: position, initial position, velocity, force, lumped mass,
 // fixity; zones: D + 1 node indices (counter-clockwise triangles, positive-volume tetrahedra),
-// stress (tension positive), plastic state and material. A node's mass is the density times the
-// measure of its median-dual cell (1/(D+1) of each zone around it), the barycentric counterpart
-// of the chapter's Voronoi cell.
+// stress (tension positive), plastic state, the model's history and material. A node's mass is the
+// density times the measure of its median-dual cell (1/(D+1) of each zone around it), the
+// barycentric counterpart of the chapter's Voronoi cell.
 //
 // Quadratic zones (3D, the chapter's 10-node option, §5.3.1): a tetrahedron with a node at the
 // middle of each edge and the quadratic displacement field of those ten nodes, its stress and
@@ -76,6 +76,7 @@ struct ContinuumT {
   std::vector<Zone> zones;
   std::vector<ZoneStress> stress;
   std::vector<uint8_t> state;
+  std::vector<double> plastic;  // the model's history: strain-softening's plastic shear strain
   std::vector<uint32_t> material;
   std::vector<ZoneProperties> materials;
   // Loading and stepping.
@@ -87,10 +88,11 @@ struct ContinuumT {
   bool nodal_mixed = true;  // nodal mixed discretization (false: plain uniform-strain zones)
   // Quadratic zones (3D only): empty when there are none, else per zone its mid-edge nodes in
   // VTK's order (edges 01, 12, 20, 03, 13, 23; kNoMid for a 4-node zone) and its integration
-  // points' stresses and states.
+  // points' stresses, states and histories (the zone's `plastic` their mean).
   std::vector<std::array<uint32_t, 6>> mid;
   std::vector<std::array<ZoneStress, 4>> gp_stress;
   std::vector<std::array<uint8_t, 4>> gp_state;
+  std::vector<std::array<double, 4>> gp_plastic;
   std::vector<uint8_t> edge_node;  // per node: 1 at the middle of a quadratic zone's edge
   ZoneScratch scratch;
 

@@ -1,6 +1,7 @@
 // Constitutive models of zones, the uniform-strain triangles a deformable block is cut into
 // and tetrahedra a deformable block is cut into (§5.2.1, §5.3.1): null, isotropic elastic,
-// Mohr-Coulomb with a tension cut-off and non-associated dilation, and Drucker-Prager. One law
+// Mohr-Coulomb with a tension cut-off and non-associated dilation, Drucker-Prager,
+// strain-softening Mohr-Coulomb, ubiquitous joints and transversely isotropic elasticity. One law
 // code for both dimensions: it works on the full 3D stress, and a 2D zone is its plane-strain
 // case (strain increments with no z components, the out-of-plane stress tracked).
 //
@@ -30,10 +31,31 @@ struct ZoneProperties {
   double cohesion = 0.0;  // Pa
   double tension = 0.0;   // tensile strength, Pa (0: none)
   double dilation = 0.0;  // degrees
+  // Strain-softening: cohesion, friction, dilation and tension as piecewise-linear tables of the
+  // plastic shear strain, flat (strain, value, strain, value, ...); empty: the constant above.
+  std::vector<double> ctable, ftable, dtable, ttable;
+  // Ubiquitous joint: the strength of the plane of weakness (degrees, Pa).
+  double jfriction = 0.0, jcohesion = 0.0, jtension = 0.0, jdilation = 0.0;
+  // Transversely isotropic elasticity: moduli in the plane of isotropy (1, 2) and normal to it
+  // (3); nu13 = -e3/e1 under stress along 1.
+  double e1 = 0.0, e3 = 0.0, nu12 = 0.0, nu13 = 0.0, g13 = 0.0;
+  // The plane (of weakness, of isotropy): in 2D its angle from x counter-clockwise (jangle), in
+  // 3D its dip and dip direction (clockwise from north = +y, z up); `orientation` says which
+  // was given: 0 neither, 2 jangle, 3 jdip and jdipdir.
+  double jangle = 0.0, jdip = 0.0, jdipdir = 0.0;
+  uint8_t orientation = 0;
+  // Derived by finalize: the plane's unit normal; a transversely isotropic material's stiffness
+  // in x, y, z (Voigt order xx, yy, zz, yz, xz, xy; engineering shears), row by row.
+  std::array<double, 3> normal{0.0, 1.0, 0.0};
+  std::array<double, 36> stiffness{};
   const ZoneModel* impl = nullptr;
   // Binds the model and checks the constants; throws std::invalid_argument naming the fault.
   void finalize();
 };
+
+// A piecewise-linear table (strain, value, ...) at `strain`; the last value beyond its end, the
+// first before its start, `constant` if the table is empty.
+double table_value(const std::vector<double>& table, double strain, double constant);
 
 // K and G from Young's modulus and Poisson's ratio; throws if nu is not in (-1, 0.5).
 void elastic_from_young(double young, double poisson, double& bulk, double& shear);
@@ -42,6 +64,10 @@ void elastic_from_young(double young, double poisson, double& bulk, double& shea
 struct ZoneStress {
   double xx = 0, yy = 0, xy = 0, zz = 0, yz = 0, xz = 0;
 };
+
+// The out-of-plane stress of plane strain (ezz = 0) with an in-plane stress `s` from zero:
+// nu (sxx + syy), or from a transversely isotropic material's compliance.
+double plane_strain_zz(const ZoneProperties& p, const ZoneStress& s);
 
 // Strain increment; the shears are tensor components (half the engineering shear). A 2D zone's
 // has zz = yz = xz = 0 (plane strain).
@@ -64,6 +90,13 @@ class ZoneModel {
   // Updates the stress for a strain increment and sets the state's "now" bits (keeping "past").
   virtual void update(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s,
                       uint8_t& state) const = 0;
+  // The same for a zone with a history, a number it keeps between steps (strain-softening's
+  // accumulated plastic shear strain); the zone loops call this one. Models without a history
+  // (and plug-ins written before it) need not override it: it forwards to the plain update.
+  virtual void update(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s,
+                      uint8_t& state, double& /*history*/) const {
+    update(p, de, s, state);
+  }
   // Whether the zone carries stress and mass at all (false for null zones).
   virtual bool solid() const { return true; }
 };
