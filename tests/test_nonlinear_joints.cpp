@@ -65,18 +65,26 @@ double barton_angle(double phi_r, double i, double r) {
   return std::min(70.0, phi_r + i * (m[k] + (r - x[k]) / (x[k + 1] - x[k]) * (m[k + 1] - m[k])));
 }
 
-// The CY law's differential equations at constant normal stress (monotonic shear), by RK4:
-// dtau/du = ks (1 - tau/tau_m) (negative once tau_m has fallen below tau), dup/du = tau/tau_m,
-// d(dilation)/du = tan(i) dup/du with tau_m = sn tan(phi + (phi0 - phi) exp(-up/R)) and i =
-// atan(tau/sn) - phi.
+// The CY law's differential equations at constant normal stress (monotonic shear), by RK4, with
+// tau_m = sn tan(phi + (phi0 - phi) exp(-up/R)) and i = atan(tau/sn) - phi: below the bound
+// dtau/du = ks (1 - tau/tau_m), dup/du = tau/tau_m; on it (once the roughness wears faster than
+// the stress climbs) tau = tau_m(up), and u = up + tau/ks gives dup/du = 1 / (1 + tau_m'/ks);
+// d(dilation)/du = tan(i) dup/du.
 struct CyReference {
   double tau = 0.0, up = 0.0, dil = 0.0;
   void advance(double ks, double sn, double phi, double phi0, double R, double du) {
     auto rate = [&](const std::array<double, 3>& y) {
-      const double tm = sn * std::tan((phi + (phi0 - phi) * std::exp(-y[1] / R)) * kDeg);
-      const double f = 1.0 - y[0] / tm, dup = 1.0 - f;
-      const double i = std::atan(y[0] / sn) - phi * kDeg;
-      return std::array<double, 3>{ks * f, dup, i > 0.0 ? std::tan(i) * dup : 0.0};
+      const double phim = (phi + (phi0 - phi) * std::exp(-y[1] / R)) * kDeg;
+      const double tm = sn * std::tan(phim);
+      const double i = std::atan(std::min(y[0], tm) / sn) - phi * kDeg;
+      const double tan_i = i > 0.0 ? std::tan(i) : 0.0;
+      if (y[0] < tm) {
+        const double f = 1.0 - y[0] / tm;
+        return std::array<double, 3>{ks * f, 1.0 - f, tan_i * (1.0 - f)};
+      }
+      const double slope = -sn / (std::cos(phim) * std::cos(phim)) * (phim - phi * kDeg) / R;
+      const double dup = 1.0 / (1.0 + slope / ks);
+      return std::array<double, 3>{slope * dup, dup, tan_i * dup};
     };
     const std::array<double, 3> y{tau, up, dil};
     auto add = [](const std::array<double, 3>& a, const std::array<double, 3>& b, double h) {
@@ -99,7 +107,7 @@ struct BlockShear {
   std::string log;
 };
 BlockShear shear_block(int dim, const std::string& joint, double total,
-                       const std::string& tolerance = "0.01") {
+                       const std::string& tolerance = "0.01", const std::string& speed = "0.002") {
   test::ScriptRun run;
   const bool three = dim == 3;
   run.run(std::string(three ? "dimension 3\n" : "round 0.002\n") + "tolerance " + tolerance + "\n" +
@@ -107,11 +115,13 @@ BlockShear shear_block(int dim, const std::string& joint, double total,
           (three ? "block box -1,-1,-1 3,3,0 group=base material=rock\n"
                    "block box 0,0,0 1,1,1 group=top material=rock\n"
                    "fix group=base\ngravity 0 0 -10\nsolve ratio=1e-7\n"
-                   "fix group=top x y rotation\nvelocity group=top vx=0.002\n"
+                   "fix group=top x y rotation\nvelocity group=top vx=" +
+                       speed + "\n"
                  : "block -1,-1 3,-1 3,0 -1,0 group=base material=rock\n"
                    "block 0,0 1,0 1,1 0,1 group=top material=rock\n"
                    "fix group=base\ngravity 0 -10\nsolve ratio=1e-7\n"
-                   "fix group=top x rotation\nvelocity group=top vx=0.002\n"));
+                   "fix group=top x rotation\nvelocity group=top vx=" +
+                       speed + "\n"));
   const Model& m = run.model();
   auto position = [&]() {
     return three ? m.blocks3.body[1].position : Vec3(m.blocks.x[1], m.blocks.y[1], 0.0);
@@ -191,6 +201,20 @@ class TestNonlinearJoints : public QObject {
     QVERIFY(std::abs(s.dilation - ref.dil) < 5e-3 * ref.dil);
   }
 
+  // The normal stress falls under a contact at its bound: the shear stress follows the bound
+  // down, keeps its direction, and the displacement it gives up is plastic.
+  void cyFollowsAFallingBound() {
+    const auto j = cy_joint(30, 30, 0);
+    JointState s;
+    direct_shear(j, 1.0, 1e6, 1e-7, 5e-3, 0.0, s);
+    const double before = s.fs, up = s.plastic;
+    QVERIFY(before < -0.99 * 1e6 * std::tan(30 * kDeg));
+    j.impl->update(j, 1.0, j.impl->closure(j, 1e3), 1e-7, 0.0, s);  // sigma_n to 1 kPa
+    QVERIFY(std::abs(s.fn - 1e3) < 1e-6);
+    QVERIFY(s.fs < 0.0 && std::abs(s.fs) <= 1e3 * std::tan(30 * kDeg) * (1 + 1e-12));
+    QVERIFY(std::abs(s.plastic - up - (std::abs(before) - std::abs(s.fs)) / j.ks - 1e-7) < 1e-12);
+  }
+
   // dsigma/dun = kn (sigma/sref)^en integrates to sigma = sref ((1 - en) kn un / sref)^(1/(1-en)),
   // linear with the capped tangent past smax; closure() is its inverse; ks grows as (sn/sref)^es.
   void cyStiffnessGrowsWithNormalStress() {
@@ -222,13 +246,15 @@ class TestNonlinearJoints : public QObject {
   // Barton's peak sigma_n tan(JRC log10(JCS / sigma_n) + phi_r) at four normal stresses.
   void bartonBandisPeakAtSeveralNormalStresses() {
     const auto j = bb_joint();
-    for (double sn : {0.25e6, 1e6, 4e6, 10e6}) {
+    for (double sn : {1e3, 0.25e6, 1e6, 4e6, 10e6}) {
       double peak = 0.0, at = 0.0;
       JointState s;
       direct_shear(j, 1.0, sn, 2e-7, 6e-3, 0.0, s, [&](double u, const JointState& st) {
         if (tau(st, 1.0) > peak) peak = tau(st, 1.0), at = u - tau(st, 1.0) / j.ks;
       });
-      const double expected = sn * std::tan((28 + 10 * std::log10(100e6 / sn)) * kDeg);
+      // (At 1 kPa the roughness angle is held to Barton's cap of 70 degrees in all.)
+      const double expected =
+          sn * std::tan(std::min(70.0, 28 + 10 * std::log10(100e6 / sn)) * kDeg);
       qInfo("sigma_n %.2f MPa: peak %.4f MPa (Barton %.4f) at plastic shear %.3f mm", sn / 1e6,
             peak / 1e6, expected / 1e6, at * 1e3);
       QVERIFY(std::abs(peak - expected) < 2e-3 * expected);
@@ -313,12 +339,15 @@ class TestNonlinearJoints : public QObject {
     QVERIFY(std::abs(r.rise.back() - rise_expected) < 5e-3 * rise_expected);
   }
 
-  // A block sheared on a continuously yielding joint follows the law's equations.
+  // A block sheared on a continuously yielding joint (at 0.5 mm/s: where the stress meets the
+  // falling bound the dilation rate has a kink, which sets the block bouncing on its joint)
+  // follows the law's equations.
   void blockShearedOnAContinuouslyYieldingJoint_data() { blockShearedOnABartonBandisJoint_data(); }
   void blockShearedOnAContinuouslyYieldingJoint() {
     QFETCH(int, dim);
     const BlockShear r = shear_block(
-        dim, "joint define j law=cy kn=1e10 ks=1e8 friction=30 ifriction=45 roughness=1e-3", 6e-3);
+        dim, "joint define j law=cy kn=1e10 ks=1e8 friction=30 ifriction=45 roughness=1e-3", 6e-3,
+        "0.01", "0.0005");
     CyReference ref;
     double u = 0.0, worst = 0.0, peak = 0.0, peak_ref = 0.0;
     for (size_t k = 0; k < r.u.size(); ++k) {
@@ -331,7 +360,7 @@ class TestNonlinearJoints : public QObject {
         "(equations %.4f)",
         dim, peak / 1e3, peak_ref / 1e3, worst, r.rise.back() * 1e3, ref.dil * 1e3);
     QVERIFY(std::abs(peak - peak_ref) < 5e-3 * peak_ref);
-    QVERIFY(worst < 5e-3);
+    QVERIFY(worst < 1e-2);
     QVERIFY(std::abs(r.rise.back() - ref.dil) < 5e-3 * ref.dil);
   }
 

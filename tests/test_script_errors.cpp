@@ -59,6 +59,11 @@ class TestScriptErrors : public QObject {
                          "rfriction=95"),
                 "rfriction must be below 90 degrees"));
   }
+  void planeOfTheWrongDimensionIsNamed() {
+    QVERIFY(has(error_of("material define m density=2500 E=1e9 nu=0.2 model=ubiquitous-joint "
+                         "friction=30 cohesion=1e6 jfriction=20 jdip=30 jdipdir=0"),
+                "a 2D model's plane is jangle="));
+  }
   void badNonlinearJointIsNamed() {
     QVERIFY(has(error_of("joint define j law=barton-bandis kn=1e9 ks=1e9 friction=28 jrc=10 "
                          "jcs=1e8"),

@@ -253,6 +253,18 @@ class TestStrengthReduction : public QObject {
     Model n = r.model();
     reduce_strength(n, 2.0, false, true);
     QCOMPARE(n.joints[0].cohesion, 2e4);
+    // Dilation is held to the reduced friction (a material cannot dilate more than it rubs), and
+    // a Barton-Bandis joint has its whole strength divided.
+    ScriptRun d;
+    d.run(
+        "material define rock density=2500 model=mohr-coulomb E=1e9 nu=0.25 cohesion=1e5 "
+        "friction=30 dilation=20\njoint define j law=barton-bandis kn=1e9 ks=1e9 friction=28 "
+        "jrc=10 jcs=1e8 vm=1e-3\n");
+    Model o = d.model();
+    reduce_strength(o, 2.0, true, true);
+    QCOMPARE(o.materials[0].zone.dilation, o.materials[0].zone.friction);
+    QCOMPARE(o.joints[0].strength_divisor, 2.0);
+    QCOMPARE(o.joints[0].friction, 28.0);
   }
 };
 

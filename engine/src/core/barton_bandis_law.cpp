@@ -1,5 +1,6 @@
 // The Barton-Bandis joint model: Bandis's hyperbolic normal closure, and Barton's shear strength
-// sigma_n tan(phi_r + JRC_mob log10(JCS / sigma_n)) with the roughness mobilised along his
+// sigma_n tan(phi_r + JRC_mob log10(JCS / sigma_n)) (phi_r + JRC log10(JCS / sigma_n) at most 70
+// degrees) with the roughness mobilised along his
 // dimensionless curve of plastic shear displacement over the displacement at peak, dilating at
 // half the mobilised roughness angle.
 #include <array>
@@ -77,8 +78,12 @@ class BartonBandisLaw final : public JointLaw {
   // shear `up`: the roughness angle JRC log10(JCS / sn) scaled along Barton's curve.
   static void mobilised(const JointProperties& p, double sn, double up, double& angle,
                         double& dilation) {
-    const double i = sn > 0.0 && sn < p.jcs ? p.jrc * std::log10(p.jcs / sn) : 0.0;
-    const double r = up / p.peak_disp;
+    // The roughness angle, at most what keeps phi_r + i within Barton's cap.
+    const double i = sn > 0.0 && sn < p.jcs ? std::clamp(p.jrc * std::log10(p.jcs / sn), 0.0,
+                                                         std::max(0.0, kMaxAngle - p.friction))
+                                            : 0.0;
+    // (No displacement at peak - JRC 0 - leaves phi_r from the start.)
+    const double r = p.peak_disp > 0.0 ? up / p.peak_disp : kRatio.back();
     double m = 0.0;  // JRC_mob / JRC above the row at 0.3; the angle itself below it
     if (r < kRatio[1]) {
       angle = p.friction * r / kRatio[1];
@@ -91,7 +96,7 @@ class BartonBandisLaw final : public JointLaw {
       const double t = (r - kRatio[k]) / (kRatio[k + 1] - kRatio[k]);
       m = kMobilised[k] + t * (kMobilised[k + 1] - kMobilised[k]);
     }
-    angle = std::min(p.friction + m * i, kMaxAngle);
+    angle = p.friction + m * i;
     dilation = 0.5 * m * i;
   }
 };

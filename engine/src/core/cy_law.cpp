@@ -76,13 +76,19 @@ class CyLaw final : public JointLaw {
       return;
     }
     // Loading (the increment pushes the shear force further along itself): the stiffness times
-    // F = 1 - |tau| / tau_m, negative above a bound that has fallen, so that the stress follows
-    // it down; the rest of the displacement is plastic. Unloading is elastic (F = 1).
+    // F = 1 - |tau| / tau_m, the rest of the displacement plastic; unloading is elastic (F = 1).
     const bool loading = s.fs * dus + s.fs2 * dus2 <= 0.0;
-    const double F = loading ? 1.0 - fs.norm() / bound : 1.0;
-    const double plastic = (1.0 - F) * step;
+    const double F = loading ? std::clamp(1.0 - fs.norm() / bound, 0.0, 1.0) : 1.0;
+    double plastic = (1.0 - F) * step;
     s.fs -= F * ks * L * dus;
     s.fs2 -= F * ks * L * dus2;
+    // Never above the bound: where it has fallen (roughness worn, normal stress dropped) the
+    // stress follows it down, the elastic displacement given up becoming plastic.
+    const double mag = fs.norm();
+    if (mag > bound) {
+      if (ks > 0.0) plastic += (mag - bound) / (ks * L);
+      fs.scale_to(bound, mag);
+    }
     if (fs.norm() >= 0.99 * bound) s.flags |= kSlipping;
     s.plastic += plastic;
     // Dilation at the angle the stress ratio stands above basic friction.

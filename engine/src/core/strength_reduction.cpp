@@ -40,6 +40,10 @@ void reduce(P& p, double f) {
     p.jfriction = reduced_friction(p.jfriction, f);
     p.jcohesion /= f, p.jtension /= f, p.jdilation = std::min(p.jdilation, p.jfriction);
     for (size_t k = 1; k < p.ftable.size(); k += 2) p.ftable[k] = reduced_friction(p.ftable[k], f);
+    // Dilation no greater than the reduced friction (a model's own check).
+    p.dilation = std::min(p.dilation, p.friction);
+    for (size_t k = 1; k < p.dtable.size(); k += 2)
+      p.dtable[k] = std::min(p.dtable[k], table_value(p.ftable, p.dtable[k - 1], p.friction));
     for (auto* t : {&p.ctable, &p.ttable})
       for (size_t k = 1; k < t->size(); k += 2) (*t)[k] /= f;
   }

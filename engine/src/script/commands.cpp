@@ -200,6 +200,10 @@ void Interpreter::cmd_material(Args& a) {
     if (zone.orientation && model != "ubiquitous-joint" && model != "transversely-isotropic")
       fail("material '" + name + "': jangle, jdip and jdipdir belong to model=ubiquitous-joint " +
            "and model=transversely-isotropic");
+    if (zone.orientation && zone.orientation != model_.dim)
+      fail("material '" + name + "': a " + std::to_string(model_.dim) + "D model's plane is " +
+           (model_.dim == 3 ? "jdip= and jdipdir=" : "jangle=") +
+           " (write 'dimension 3' before a 3D model's materials)");
     if (has_ti && model != "transversely-isotropic")
       fail("material '" + name + "': E1, E3, nu12, nu13 and G13 belong to " +
            "model=transversely-isotropic");
