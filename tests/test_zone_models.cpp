@@ -320,6 +320,27 @@ class TestZoneModels : public QObject {
     }
   }
 
+  // A stress beyond the joint's corner (tension above the cut-off with shear above the line's
+  // strength there) goes back to the corner: sn the cut-off, tau the line's strength at it.
+  void ubiquitousJointCornerReturn() {
+    ZoneProperties p = base("ubiquitous-joint");
+    p.friction = 40, p.cohesion = 50e6, p.tension = 50e6;
+    p.jfriction = 30, p.jcohesion = 1e6, p.jtension = 0.5e6;
+    p.orientation = 2, p.jangle = 0;  // the plane along x: sn = syy, tau = sxy
+    p.finalize();
+    ZoneStress s;
+    uint8_t state = 0;
+    double history = 0;
+    StrainIncrement de;
+    de.yy = 1e-3, de.xy = 1e-3;  // pulls the plane open and shears it hard
+    p.impl->update(p, de, s, state, history);
+    const double tau_p = 1e6 - 0.5e6 * std::tan(30 * M_PI / 180);
+    qInfo("sn %.6g (cut-off 5e5), tau %.6g (corner %.6g)", s.yy, s.xy, tau_p);
+    QVERIFY(std::abs(s.yy - 0.5e6) < 1e-6 * 0.5e6);
+    QVERIFY(std::abs(std::abs(s.xy) - tau_p) < 1e-6 * tau_p);
+    QVERIFY((state & kTensionNow) && (state & kShearNow));
+  }
+
   // Uniaxial stress along, across and at 45 degrees to the plane of isotropy (oblique to the
   // axes): the strain tensor is the rotated compliance times the stress (to 1e-9), the axial
   // strain Lekhnitskii's 1/E(theta) in 3D and its plane-strain counterpart in 2D, where the

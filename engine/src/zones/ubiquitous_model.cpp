@@ -60,15 +60,22 @@ bool joint_correct(const ZoneProperties& p, ZoneStress& s, uint8_t& state) {
   const Eigen::Matrix3d nn = n * n.transpose(),
                         iso = a2 * Eigen::Matrix3d::Identity() + 2.0 * p.shear * nn;
   Eigen::Matrix3d ds;
-  if (fs > 0 && h > 0) {
-    // Shear: tau drops by G lambda, sn by a1 tan(psi) lambda, onto the line.
-    const double lambda = fs / (p.shear + a1 * tphi * tpsi);
+  // Shear: tau drops by G lambda, sn by a1 tan(psi) lambda, onto the line - unless that leaves
+  // the plane beyond its cut-off (then the corner, below).
+  const double lambda = fs / (p.shear + a1 * tphi * tpsi);
+  if (fs > 0 && h > 0 && sn - a1 * tpsi * lambda <= st) {
     const Eigen::Vector3d t = tau > 0 ? Eigen::Vector3d(shear / tau) : Eigen::Vector3d::Zero();
     ds = -lambda * (p.shear * (t * n.transpose() + n * t.transpose()) + tpsi * iso);
     state |= kShearNow | kShearPast;
   } else {
-    // Tension: sn back to the cut-off.
+    // Tension: sn back to the cut-off, and a shear traction above the line's strength there
+    // (the corner) down to it.
     ds = -(ft / a1) * iso;
+    if (tau > std::max(tau_p, 0.0)) {
+      const Eigen::Vector3d t = shear / tau;
+      ds -= (tau - std::max(tau_p, 0.0)) * (t * n.transpose() + n * t.transpose());
+      state |= kShearNow | kShearPast;
+    }
     state |= kTensionNow | kTensionPast;
   }
   s.xx += ds(0, 0), s.yy += ds(1, 1), s.zz += ds(2, 2);
