@@ -5,6 +5,8 @@
 // half the mobilised roughness angle.
 #include <array>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "nonlinear_laws.hpp"
 
@@ -40,6 +42,18 @@ void closure_curve(const JointProperties& p, double un, double& sigma, double& t
 class BartonBandisLaw final : public JointLaw {
  public:
   const char* name() const override { return "barton-bandis"; }
+  bool divides_strength() const override { return true; }
+
+  void check(const JointProperties& j) const override {
+    const std::string at = "joint '" + j.name + "': ";
+    if (!(j.jrc >= 0.0 && j.jrc <= 20.0))
+      throw std::invalid_argument(at + "jrc must be in [0, 20]");
+    if (!(j.jcs > 0.0 && j.vm > 0.0))
+      throw std::invalid_argument(at + "jcs (Pa) and vm (m) must be positive");
+    if (j.dpeak < 0.0 || !(j.lj > 0.0) || (j.kn_cap != 0.0 && !(j.kn_cap > j.kn)))
+      throw std::invalid_argument(
+          at + "dpeak cannot be negative, lj must be positive and knmax above kn");
+  }
 
   double closure(const JointProperties& p, double sigma_n) const override {
     if (sigma_n <= 0.0) return 0.0;

@@ -4,6 +4,8 @@
 // basic one with plastic shear, and dilation at the angle the stress ratio stands above basic
 // friction.
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "nonlinear_laws.hpp"
 
@@ -38,6 +40,21 @@ void normal_curve(const JointProperties& p, double un, double& sigma, double& ta
 class CyLaw final : public JointLaw {
  public:
   const char* name() const override { return "cy"; }
+  bool divides_strength() const override { return true; }
+
+  void check(const JointProperties& j) const override {
+    const std::string at = "joint '" + j.name + "': ";
+    if (!(j.en >= 0.0 && j.en < 1.0 && j.es >= 0.0 && j.es < 1.0))
+      throw std::invalid_argument(at + "the exponents en and es must be in [0, 1)");
+    if (!(j.sref > 0.0) || j.smax < 0.0)
+      throw std::invalid_argument(at + "sref must be positive and smax not negative");
+    if (j.initial_friction >= 90.0 ||
+        (j.initial_friction >= 0.0 && j.initial_friction < j.friction))
+      throw std::invalid_argument(at + "ifriction must lie between friction and 90 degrees");
+    if (j.roughness < 0.0 || (j.initial_friction > j.friction && !(j.roughness > 0.0)))
+      throw std::invalid_argument(
+          at + "roughness (m) must be positive when ifriction is above friction");
+  }
 
   double closure(const JointProperties& p, double sigma_n) const override {
     if (p.en == 0.0 || sigma_n <= 0.0) return sigma_n / p.kn;

@@ -121,6 +121,7 @@ Dashpot contact_dashpot(const JointProperties& p, double size, double share, dou
 void JointProperties::finalize() {
   impl = find_joint_law(law);
   if (!impl) throw std::invalid_argument("unknown joint law '" + law + "'");
+  impl->check(*this);
   tan_friction = std::tan(friction * std::numbers::pi / 180.0);
   tan_dilation = std::tan(dilation * std::numbers::pi / 180.0);
   tan_residual = residual_friction < 0.0 ? tan_friction

@@ -22,7 +22,7 @@ template <class P>
 void reduce(P& p, double f) {
   // The nonlinear joint laws: their whole shear strength divided by f.
   if constexpr (std::is_same_v<P, JointProperties>) {
-    if (p.law == "cy" || p.law == "barton-bandis") {
+    if (p.impl && p.impl->divides_strength()) {
       p.strength_divisor *= f;
       p.finalize();
       return;

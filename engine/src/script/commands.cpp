@@ -269,34 +269,6 @@ void Interpreter::cmd_material(Args& a) {
   }
 }
 
-namespace {
-
-// The parameters of law=cy and law=barton-bandis in range (std::invalid_argument names the fault).
-void check_cy(const JointProperties& j) {
-  const std::string at = "joint '" + j.name + "': ";
-  if (!(j.en >= 0.0 && j.en < 1.0 && j.es >= 0.0 && j.es < 1.0))
-    throw std::invalid_argument(at + "the exponents en and es must be in [0, 1)");
-  if (!(j.sref > 0.0) || j.smax < 0.0)
-    throw std::invalid_argument(at + "sref must be positive and smax not negative");
-  if (j.initial_friction >= 90.0 || (j.initial_friction >= 0.0 && j.initial_friction < j.friction))
-    throw std::invalid_argument(at + "ifriction must lie between friction and 90 degrees");
-  if (j.roughness < 0.0 || (j.initial_friction > j.friction && !(j.roughness > 0.0)))
-    throw std::invalid_argument(at +
-                                "roughness (m) must be positive when ifriction is above friction");
-}
-
-void check_barton_bandis(const JointProperties& j) {
-  const std::string at = "joint '" + j.name + "': ";
-  if (!(j.jrc >= 0.0 && j.jrc <= 20.0)) throw std::invalid_argument(at + "jrc must be in [0, 20]");
-  if (!(j.jcs > 0.0 && j.vm > 0.0))
-    throw std::invalid_argument(at + "jcs (Pa) and vm (m) must be positive");
-  if (j.dpeak < 0.0 || !(j.lj > 0.0) || (j.kn_cap != 0.0 && !(j.kn_cap > j.kn)))
-    throw std::invalid_argument(at +
-                                "dpeak cannot be negative, lj must be positive and knmax above kn");
-}
-
-}  // namespace
-
 void Interpreter::cmd_joint(Args& a) {
   if (a.words.size() < 2)
     fail("write 'joint define NAME kn=.. ks=.. friction=..' or 'joint assign NAME'");
@@ -360,8 +332,6 @@ void Interpreter::cmd_joint(Args& a) {
     if ((cy || bb) && (j.cohesion > 0.0 || j.tension > 0.0 || j.dilation > 0.0))
       fail("joint '" + name + "': law=" + j.law +
            " has no cohesion, tension or dilation parameter (its dilation comes from roughness)");
-    if (cy) check_cy(j);
-    if (bb) check_barton_bandis(j);
     if (!find_joint_law(j.law))
       fail("'" + j.law + "' is not a joint law" + suggest(j.law, joint_law_names()));
     j.finalize();

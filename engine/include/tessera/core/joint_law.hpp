@@ -105,6 +105,11 @@ class JointLaw {
   virtual void stiffness_bounds(const JointProperties& p, double& kn, double& ks) const {
     kn = p.kn, ks = p.ks;
   }
+  // Checks the set's parameters of this law; throws std::invalid_argument naming the fault.
+  virtual void check(const JointProperties& /*p*/) const {}
+  // Whether strength reduction divides the law's whole shear strength (`strength_divisor`)
+  // rather than its friction, cohesion and tension parameters.
+  virtual bool divides_strength() const { return false; }
   // The 2D form: one shear component.
   void update(const JointProperties& p, double length, double overlap, double dus,
               JointState& s) const {
