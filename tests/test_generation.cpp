@@ -5,6 +5,7 @@
 
 #include "support.hpp"
 #include "tessera/core/parallel.hpp"
+#include "tessera/generation/generators.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;
@@ -111,6 +112,54 @@ class TestGeneration : public QObject {
     QVERIFY(std::abs(inside - exact) < 1e-9 * exact);
     // The ring around the opening is split into simple blocks.
     QCOMPARE(m.blocks.size(), size_t(3));
+  }
+  // The opening's blocks hold exactly its area, also where the outline enters and leaves a
+  // block through one edge (a notch) or crosses it several times; the rest keeps its group.
+  void openingsTakeExactlyTheirArea_data() {
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<double>("opening");
+    QTest::addColumn<double>("total");
+    QTest::addColumn<int>("blocks");  // 0: not checked
+    QTest::newRow("circle biting into bed strips")
+        << "block -10,-10 10,-10 10,10 -10,10 material=rock\njset angle=20 spacing=1.5\n"
+           "tunnel circle centre=0,0 radius=3 name=tunnel group=tunnel"
+        << 0.5 * 24 * 9 * std::sin(2 * M_PI / 24) << 400.0 << 0;
+    QTest::newRow("deep notch")
+        << "region 0,0 10,2 material=rock\ntunnel rectangle 1,0.2 9,3 group=tunnel" << 14.4 << 20.0
+        << 2;
+    QTest::newRow("crossed four times")
+        << "region 0,0 10,2 material=rock\n"
+           "tunnel polygon 1,-1 9,-1 9,3 7,3 7,1 3,1 3,3 1,3 group=tunnel"
+        << 12.0 << 20.0 << 4;
+    QTest::newRow("horseshoe in bed strips")
+        << "region -10,-10 10,10 material=rock\njset angle=15 spacing=1.2\n"
+           "tunnel horseshoe centre=0,-2 width=5 height=5 segments=12 group=tunnel"
+        << signed_area(horseshoe_outline(Vec2(0, -2), 5, 5, 12)) << 400.0 << 0;
+  }
+  void openingsTakeExactlyTheirArea() {
+    QFETCH(QString, model);
+    QFETCH(double, opening);
+    QFETCH(double, total);
+    QFETCH(int, blocks);
+    ScriptRun r;
+    r.run(std::string(kRock) + model.toStdString() + "\n");
+    Model& m = r.model();
+    const int g = m.group_index("tunnel", false);
+    double inside = 0.0, rest = 0.0;
+    for (size_t b = 0; b < m.blocks.size(); ++b)
+      (m.blocks.group[b] == g ? inside : rest) += m.blocks.area[b];
+    QVERIFY2(std::abs(inside - opening) < 1e-9 * opening, qPrintable(QString::number(inside)));
+    QVERIFY(std::abs(inside + rest - total) < 1e-9 * total);
+    if (blocks > 0) QCOMPARE(m.blocks.size(), size_t(blocks));
+  }
+  // A crack that enters and leaves a block through one edge cuts off what it encloses.
+  void crackInAndOutThroughOneEdge() {
+    ScriptRun r;
+    r.run(std::string(kRock) + "region 0,0 10,2 material=rock\ncrack 2,-1 5,1 8,-1\n");
+    QCOMPARE(r.model().blocks.size(), size_t(2));
+    std::vector<double> areas = r.model().blocks.area;
+    std::sort(areas.begin(), areas.end());
+    QVERIFY(std::abs(areas[0] - 1.5) < 1e-12 && std::abs(areas[1] - 18.5) < 1e-12);
   }
   void cutsThroughVerticesAndAlongEdgesLeaveNoSlivers() {
     ScriptRun r;

@@ -175,11 +175,12 @@ void Interpreter::cmd_tunnel(Args& a) {
     log("tunnel: the rock around the opening is split by a horizontal joint named 'split' (blocks "
         "cannot have holes); give it properties that keep it shut, e.g. 'joint assign NAME "
         "joints=split' with a high tensile strength and cohesion");
-  // The blocks inside the outline form a group, ready to be excavated with 'delete'.
+  // The blocks inside the outline form a group, ready to be excavated with 'delete'. Each is
+  // tested at a point inside it: the centroid of a piece the opening bites into lies outside it.
   const int g = model_.group_index(group, true);
   outline.pop_back();
   for (size_t b = 0; b < model_.blocks.size(); ++b)
-    if (point_in_polygon(Vec2(model_.blocks.x[b], model_.blocks.y[b]), outline))
+    if (point_in_polygon(interior_point(model_.blocks.world_polygon(b)), outline))
       model_.blocks.group[b] = g;
   overlap_checked_ = false;
 }
