@@ -26,6 +26,7 @@
 #include "tessera/ui/colour_map.hpp"
 #include "tessera/ui/command_dialog.hpp"
 #include "tessera/ui/console_widget.hpp"
+#include "tessera/ui/figure_writer.hpp"
 #include "tessera/ui/history_charts.hpp"
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/model_tree.hpp"
@@ -118,6 +119,24 @@ std::vector<QPoint> model_pixels(const QImage& img, Is is) {
 // Blue-grey: the second group's colour (120,150,190), shaded.
 bool blue_grey(const QColor& c) {
   return c.saturation() >= 40 && c.blue() > c.red() + 30;
+}
+
+// Orange: the third group's colour (200,130,90), shaded.
+bool orange(const QColor& c) {
+  return c.saturation() >= 40 && c.red() > c.blue() + 60 && c.red() > c.green() + 35;
+}
+
+// The rows of an image from the first to the last holding at least two pixels of a colour
+// between columns x0 and x1 (0 if none).
+template <class Is>
+int rows_spanned(const QImage& img, int x0, int x1, Is is) {
+  int first = -1, last = -2;
+  for (int y = 0; y < img.height(); ++y) {
+    int n = 0;
+    for (int x = x0; x < x1; ++x) n += is(img.pixelColor(x, y));
+    if (n >= 2) last = y, first = first < 0 ? y : first;
+  }
+  return last - first + 1;
 }
 
 // A wall with a block behind it (seen from the south, the wall hides it).
@@ -640,6 +659,96 @@ class TestGui : public QObject {
     QCOMPARE(flat.view()->pixelOf({1.0, 2.0}), flat_at);
     flat.view()->resetCamera();
     QCOMPARE(flat.view()->pixelOf({1.0, 2.0}), flat_at);
+  }
+
+  // 3D figures in perspective, as View > Perspective shows the window: a row of ten unit cubes
+  // along x seen from the west-south-west, the near cube (blue-grey) drawn taller than the far
+  // one (orange), as tall in the parallel default. The window's figure has the window's camera
+  // (the same ratio as on the screen). Seen from close in front of a wall and above it, the
+  // wall's top, edge-on along the line of sight, faces the eye and shows, and the block behind
+  // the wall stays hidden. The script keyword is refused in 2D.
+  void figuresInPerspective() {
+    const QString path = write_script(dir_, "row3d.tess",
+                                      "dimension 3\nmaterial define rock density=2500\n"
+                                      "block box 1,0,0 9,1,1 material=rock group=row\n"
+                                      "block box 0,0,0 1,1,1 material=rock group=near\n"
+                                      "block box 9,0,0 10,1,1 material=rock group=far\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    ViewOptions o = w.viewOptions();
+    o.azimuth = 240, o.elevation = 20, o.contacts = ContactShow::kOff;
+    // The near cube's height over the far one's, left of a figure's legend or in the window's
+    // model area.
+    const auto ratio = [](const QImage& img, int x0, int x1) {
+      return double(rows_spanned(img, x0, x1, blue_grey)) /
+             std::max(1, rows_spanned(img, x0, x1, orange));
+    };
+    const auto figure = [&](const ViewOptions& v, const QString& name) {
+      const QString file = dir_.filePath(name);
+      write_figure(build_scene(*w.snapshot(), v), file.toStdString(), 1200, 900);
+      return QImage(file);
+    };
+    const double parallel = ratio(figure(o, "row_parallel.png"), 0, 900);
+    o.perspective = true;
+    const double perspective = ratio(figure(o, "row_perspective.png"), 0, 900);
+    qInfo("near cube over far cube: %.3f in parallel, %.3f in perspective", parallel, perspective);
+    QVERIFY(std::abs(parallel - 1.0) < 0.05);
+    QVERIFY(perspective > 1.4);
+    QVERIFY(build_scene(*w.snapshot(), o).caption.find("in perspective") != std::string::npos);
+    // The window in perspective (the menu's setting follows the options) and its figure.
+    w.setViewOptions(o);
+    QVERIFY(w.view()->perspective());
+    QVERIFY(w.findChild<QAction*>("perspective")->isChecked());
+    w.view()->resetCamera();
+    QTest::qWait(100);
+    const QImage screen = w.view()->grabFramebuffer();
+    const QString exported = dir_.filePath("row_window.png");
+    w.exportFigure(exported, 1200, 900);
+    const double on_screen = ratio(screen, screen.width() * 15 / 100, screen.width() * 8 / 10);
+    const double in_figure = ratio(QImage(exported), 0, 900);
+    qInfo("window in perspective: %.3f on the screen, %.3f in its figure", on_screen, in_figure);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS")) {
+      screen.save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/view_3d_row_perspective.png");
+      QImage(exported).save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/row_window.png");
+    }
+    QVERIFY(on_screen > 1.4);
+    QVERIFY(std::abs(in_figure - on_screen) < 0.1 * on_screen);
+    // From 7 m in front of the wall, 2 m above its top, looking level: the top (shaded as
+    // edge-on: 0.6 times the wall's colour) shows; the block behind does not.
+    const QString behind = write_script(dir_, "behind_perspective.tess", kWallAndHidden);
+    MainWindow w2;
+    QVERIFY(open_shown(w2, behind));
+    ViewOptions close;
+    close.azimuth = 180, close.elevation = 0, close.contacts = ContactShow::kOff;
+    close.perspective = close.has_camera = true;
+    close.focus = Vec3(5, 21, 12), close.distance = 8;
+    const QString file = dir_.filePath("wall_perspective.png");
+    write_figure(build_scene(*w2.snapshot(), close), file.toStdString(), 1200, 900);
+    const QImage img(file);
+    const Rgb wall = category(0);
+    const Rgb top{static_cast<unsigned char>(std::lround(0.6 * wall.r)),
+                  static_cast<unsigned char>(std::lround(0.6 * wall.g)),
+                  static_cast<unsigned char>(std::lround(0.6 * wall.b))};
+    long hidden = 0, tops = 0, fronts = 0;
+    for (int y = 0; y < img.height(); ++y)
+      for (int x = 0; x < 900; ++x) {
+        const QColor c = img.pixelColor(x, y);
+        hidden += blue_grey(c);
+        tops += close_to(c, top, 3);
+        fronts += close_to(c, wall, 3);
+      }
+    qInfo("close to the wall: %ld pixels of its front, %ld of its top, %ld of the block behind",
+          fronts, tops, hidden);
+    QVERIFY(fronts > 100000);
+    QVERIFY(tops > 5000);
+    QCOMPARE(hidden, 0L);
+    // The `figure` keyword: 3D models only, on or off.
+    ViewOptions v;
+    QVERIFY(set_perspective(v, "on", 2).find("2D") != std::string::npos);
+    QVERIFY(!v.perspective);
+    QVERIFY(!set_perspective(v, "yes", 3).empty());
+    QVERIFY(set_perspective(v, "on", 3).empty());
+    QVERIFY(v.perspective);
   }
 
   // A zoned column under gravity coloured by syy: the zones are drawn (one triangle each) in

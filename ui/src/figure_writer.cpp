@@ -170,14 +170,16 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   const QRectF legend_box(plot.right() + m, plot.top(), legend_w, plot.height());
   const double used = paint_legend(p, s.blocks_legend, legend_box, font_px);
   paint_legend(p, s.contacts_legend, legend_box.adjusted(0, used, 0, 0), font_px);
-  // Scale bar: a round length near a fifth of the plot width.
+  // Scale bar: a round length near a fifth of the plot width (none in perspective).
   const double len = nice_length(plot.width() / k / 5.0);
   const QPointF sb(plot.left(), plot.bottom() + 1.5 * m);
   p.setPen(QPen(Qt::black, std::max(1.0, font_px / 8.0)));
-  p.drawLine(sb, sb + QPointF(k * len, 0));
-  p.drawLine(sb + QPointF(0, -0.3 * m), sb + QPointF(0, 0.3 * m));
-  p.drawLine(sb + QPointF(k * len, -0.3 * m), sb + QPointF(k * len, 0.3 * m));
-  p.drawText(sb + QPointF(k * len + 0.5 * m, 0.35 * font_px), number(len) + " m");
+  if (!s.perspective) {
+    p.drawLine(sb, sb + QPointF(k * len, 0));
+    p.drawLine(sb + QPointF(0, -0.3 * m), sb + QPointF(0, 0.3 * m));
+    p.drawLine(sb + QPointF(k * len, -0.3 * m), sb + QPointF(k * len, 0.3 * m));
+    p.drawText(sb + QPointF(k * len + 0.5 * m, 0.35 * font_px), number(len) + " m");
+  }
   p.drawText(QRectF(area.left() + m, plot.bottom() + 2.3 * m, area.width() - 2 * m, caption_h),
              Qt::AlignLeft | Qt::TextWordWrap, caption);
   p.restore();

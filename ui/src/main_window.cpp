@@ -152,7 +152,11 @@ void MainWindow::buildActions() {
   QAction* perspective = view->addAction("&Perspective (3D)");
   perspective->setObjectName("perspective");
   perspective->setCheckable(true);
-  connect(perspective, &QAction::toggled, view_, &VtkView::setPerspective);
+  connect(perspective, &QAction::toggled, this, [this](bool on) {
+    options_.perspective = on;  // figures of the current view follow it, the caption says so
+    view_->setPerspective(on);
+    redraw();
+  });
   QAction* see_through = view->addAction("&See-through blocks (3D)");
   see_through->setObjectName("see_through");
   see_through->setCheckable(true);
@@ -436,6 +440,8 @@ void MainWindow::setViewOptions(const ViewOptions& o) {
   contacts_box_->setCurrentText(QString::fromStdString(contact_show_names()[size_t(o.contacts)]));
   vectors_box_->setChecked(o.vectors);
   magnify_box_->setValue(o.magnify);
+  if (auto* perspective = findChild<QAction*>("perspective"))
+    perspective->setChecked(o.perspective);  // the view takes it when it changes
   redraw();
 }
 
@@ -444,6 +450,8 @@ void MainWindow::exportFigure(const QString& path, int width, int height) {
   ViewOptions o = options_;
   o.has_window = true;
   view_->visibleWindow(o.lo, o.hi);
+  // 3D: the window's camera, so that a perspective figure shows what the window shows.
+  if (shown_->three) o.has_camera = true, view_->camera3(o.focus, o.distance);
   write_figure(build_scene(*shown_, o), path.toStdString(), width, height);
   console_->append("figure " + path, false);
 }

@@ -388,9 +388,12 @@ void set_bar_squares3(const Snapshot& s, const ViewOptions& o, Scene& out) {
 }
 }  // namespace
 
-Scene build_scene(const Snapshot& s, const ViewOptions& o, bool camera) {
+Scene build_scene(const Snapshot& s, const ViewOptions& options, bool camera) {
   Scene out;
   out.camera = camera && s.three;
+  // A figure in perspective gets its camera; the window's camera projects world points itself.
+  ViewOptions o = s.three ? with_camera(s, options) : options;
+  if (out.camera) o.perspective = false;
   out.title = o.title.empty() ? s.title : o.title;
   char buf[120];
   std::snprintf(buf, sizeof buf, "cycle %llu   time %.4g s   ratio %.2e",
@@ -427,11 +430,21 @@ Scene build_scene(const Snapshot& s, const ViewOptions& o, bool camera) {
                     number(o.cut_point.y()).c_str(), number(o.cut_point.z()).c_str());
       out.caption += cut;
     }
+    // In perspective: nothing behind the eye.
+    if (const ViewAxes view(o); view.perspective) {
+      std::erase_if(out.bars, [&](const SceneBar& bar) {
+        return !view.in_front(shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]));
+      });
+      std::erase_if(out.arrows, [&](const SceneArrow& a) {
+        return !view.in_front(a.tail3) || !view.in_front(a.head3);
+      });
+    }
     out.lo = lo, out.hi = hi;
     out.azimuth = o.azimuth, out.elevation = o.elevation;
+    out.perspective = ViewAxes(o).perspective;
     char view[80];
-    std::snprintf(view, sizeof view, "   view from azimuth %.0f, elevation %.0f", o.azimuth,
-                  o.elevation);
+    std::snprintf(view, sizeof view, "   view from azimuth %.0f, elevation %.0f%s", o.azimuth,
+                  o.elevation, options.perspective ? ", in perspective" : "");
     out.caption += view;
   } else {
     const double size = std::max((s.hi - s.lo).norm(), 1e-9);

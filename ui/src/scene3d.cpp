@@ -17,6 +17,67 @@ ViewAxes::ViewAxes(double azimuth, double elevation) {
 }
 
 namespace {
+// The near plane's distance from the eye, as a share of the focal distance.
+constexpr double kNear = 0.01;
+}  // namespace
+
+ViewAxes::ViewAxes(const ViewOptions& o) : ViewAxes(o.azimuth, o.elevation) {
+  if (o.perspective && o.has_camera && o.distance > 0)
+    perspective = true, focus = o.focus, distance = o.distance;
+}
+
+Vec2 ViewAxes::operator()(const Vec3& p) const {
+  if (!perspective) return {p.dot(right), p.dot(up)};
+  const Vec3 q = p - focus;
+  const double k = distance / std::max(distance - q.dot(eye), kNear * distance);
+  return Vec2(focus.dot(right), focus.dot(up)) + k * Vec2(q.dot(right), q.dot(up));
+}
+
+double ViewAxes::depth(const Vec3& p) const {
+  if (!perspective) return p.dot(eye);
+  const double h = (p - focus).dot(eye);
+  return distance * h / std::max(distance - h, kNear * distance);
+}
+
+bool ViewAxes::in_front(const Vec3& p) const {
+  return !perspective || distance - (p - focus).dot(eye) >= kNear * distance;
+}
+
+double ViewAxes::facing(const Vec3& n, const Vec3& p) const {
+  return perspective ? n.dot((focus + distance * eye - p).normalized()) : n.dot(eye);
+}
+
+CameraFit fit_camera(const std::vector<Vec3>& pts, double azimuth, double elevation,
+                     double aspect) {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const Vec3& w : pts) lo = lo.cwiseMin(w), hi = hi.cwiseMax(w);
+  if (!(hi.x() >= lo.x())) lo = hi = Vec3::Zero();
+  CameraFit fit;
+  fit.focus = 0.5 * (lo + hi);
+  const double radius = std::max(0.5 * (hi - lo).norm(), 1e-9);
+  // The scale that fits the projected points in the viewport.
+  const ViewAxes v(azimuth, elevation);
+  double half_w = 1e-9, half_h = 1e-9;
+  for (const Vec3& w : pts) {
+    const Vec2 q = v(w - fit.focus);
+    half_w = std::max(half_w, std::abs(q.x())), half_h = std::max(half_h, std::abs(q.y()));
+  }
+  const double a = aspect > 0 ? aspect : 1.0;
+  const double tangent = std::tan(kViewAngle * std::numbers::pi / 360);
+  fit.scale = 1.08 * std::max(half_h, half_w / a);
+  // Far enough that a perspective view shows the same at the focal point, outside the points'
+  // sphere, and with every point in view (the nearer, the larger drawn).
+  fit.distance = std::max(fit.scale / tangent, 1.5 * radius);
+  for (const Vec3& w : pts) {
+    const Vec2 q = v(w - fit.focus);
+    const double ahead = (w - fit.focus).dot(v.eye);
+    fit.distance = std::max(
+        fit.distance, ahead + 1.08 * std::max(std::abs(q.y()), std::abs(q.x()) / a) / tangent);
+  }
+  return fit;
+}
+
+namespace {
 // The cut's upward normal (the engine's rule for a plane by dip and dip direction).
 Vec3 cut_normal(const ViewOptions& o) {
   return normal_from_dip(o.cut_dip, o.cut_dip_direction);
@@ -27,16 +88,27 @@ void add_crossing(const Vec3& a, const Vec3& b, double da, double db, std::vecto
   if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + da / (da - db) * (b - a));
 }
 
-// A polygon's part below the cut (Sutherland-Hodgman against one plane).
-void clip_below(const ViewOptions& o, const std::vector<Vec3>& in, std::vector<Vec3>& out) {
+// A polygon's part where a plane's signed height is not above zero (Sutherland-Hodgman).
+template <class Height>
+void clip(const std::vector<Vec3>& in, std::vector<Vec3>& out, const Height& height) {
   out.clear();
-  const Vec3 n = cut_normal(o);
   for (size_t k = 0; k < in.size(); ++k) {
     const Vec3 &a = in[k], &b = in[(k + 1) % in.size()];
-    const double da = n.dot(a - o.cut_point), db = n.dot(b - o.cut_point);
+    const double da = height(a), db = height(b);
     if (da <= 0) out.push_back(a);
     add_crossing(a, b, da, db, out);
   }
+}
+
+// A polygon's part below the cut.
+void clip_below(const ViewOptions& o, const std::vector<Vec3>& in, std::vector<Vec3>& out) {
+  const Vec3 n = cut_normal(o);
+  clip(in, out, [&](const Vec3& p) { return n.dot(p - o.cut_point); });
+}
+
+// A polygon's part in front of the eye's near plane (perspective).
+void clip_near(const ViewAxes& v, const std::vector<Vec3>& in, std::vector<Vec3>& out) {
+  clip(in, out, [&](const Vec3& p) { return (p - v.focus).dot(v.eye) - (1 - kNear) * v.distance; });
 }
 
 Vec3 displacement(const SnapshotBlock& b) {
@@ -68,6 +140,21 @@ bool cut_away(const ViewOptions& o, const Vec3& p) {
   return o.cut && cut_normal(o).dot(p - o.cut_point) > 0;
 }
 
+ViewOptions with_camera(const Snapshot& s, const ViewOptions& o) {
+  if (!o.perspective || o.has_camera) return o;
+  std::vector<Vec3> pts, kept;
+  for (const Snapshot::Face3& f : s.faces3) {
+    const Vec3 shift = (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(f.block)]);
+    for (uint32_t k = f.begin; k < f.end; ++k) pts.push_back(s.points3[k] + shift);
+  }
+  for (const Vec3& p : pts)
+    if (!cut_away(o, p)) kept.push_back(p);
+  const CameraFit fit = fit_camera(kept.empty() ? pts : kept, o.azimuth, o.elevation, 1.5);
+  ViewOptions out = o;
+  out.has_camera = true, out.focus = fit.focus, out.distance = fit.distance;
+  return out;
+}
+
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
   const ViewAxes view(o);
   Snapshot flat;
@@ -76,14 +163,18 @@ Snapshot flatten3(const Snapshot& s, const ViewOptions& o) {
   for (SnapshotBlock& b : flat.blocks) {
     const Vec2 at = view(Vec3(b.x, b.y, b.z)), ref = view(Vec3(b.x_ref, b.y_ref, b.z_ref));
     b.x = at.x(), b.y = at.y(), b.x_ref = ref.x(), b.y_ref = ref.y();
+    // In perspective the contacts are placed where they are drawn, magnified: no shift left.
+    if (view.perspective) b.x_ref = b.x, b.y_ref = b.y;
   }
   flat.contacts = s.contacts;
   for (SnapshotContact& c : flat.contacts) {
-    c.point = c.from = c.to = view(c.point3);
+    const Vec3 at = view.perspective ? shown_point3(s, o, c) : c.point3;
+    c.point = c.from = c.to = view(at);
     // The bar lies across the projected normal; a normal along the line of sight shows as a
-    // square (any screen direction).
-    const Vec2 n = view(c.normal3);
+    // square (any screen direction). In perspective it is shorter the farther it is.
+    const Vec2 n(c.normal3.dot(view.right), c.normal3.dot(view.up));
     c.normal = n.norm() > 1e-6 ? Vec2(n.normalized()) : Vec2(0, 1);
+    if (view.perspective) c.length *= (view(at + view.right) - c.point).norm();
   }
   return flat;
 }
@@ -97,7 +188,7 @@ void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
   const ViewAxes view(o);
   for (SceneBar& bar : out.bars) {
     if (bar.contact < 0 || static_cast<size_t>(bar.contact) >= s.contacts.size()) continue;
-    bar.depth = shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]).dot(view.eye);
+    bar.depth = view.depth(shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]));
   }
 }
 
@@ -115,25 +206,29 @@ void add_faces3(const Snapshot& s, const ViewOptions& o, const std::vector<Rgb>&
   };
   // A polygon of world points, if it faces the viewer or a camera or cut may show its inside
   // (clipped by the cut unless it is a section lying on it).
-  std::vector<Vec3> below;
+  std::vector<Vec3> below, near;
   const auto show = [&](const std::vector<Vec3>& face, int block, Rgb base, bool outline,
                         bool section = false, int zone = -1) {
-    Vec3 n = Vec3::Zero();
-    for (size_t k = 0; k < face.size(); ++k) n += face[k].cross(face[(k + 1) % face.size()]);
-    const double facing = n.normalized().dot(view.eye);
-    if (!(facing > 1e-9) && !out.camera && !o.cut) return;
     if (face.size() < 3) return;
+    Vec3 n = Vec3::Zero(), mid = Vec3::Zero();
+    for (size_t k = 0; k < face.size(); ++k)
+      n += face[k].cross(face[(k + 1) % face.size()]), mid += face[k];
+    n.normalize();
+    // Turned away from the eye (in perspective: from where it is, not the line of sight).
+    if (!(view.facing(n, mid / static_cast<double>(face.size())) > 1e-9) && !out.camera && !o.cut)
+      return;
     if (o.cut && !section) clip_below(o, face, below);
-    const std::vector<Vec3>& pts = o.cut && !section ? below : face;
-    if (pts.size() < 3) return;
+    const std::vector<Vec3>* pts = o.cut && !section ? &below : &face;
+    if (view.perspective) clip_near(view, *pts, near), pts = &near;
+    if (pts->size() < 3) return;
     ScenePolygon polygon;
     polygon.block = block;
     polygon.zone = zone;
     polygon.outline = outline;
-    for (const Vec3& p : pts)
-      polygon.points.push_back(view(p)), polygon.depth.push_back(p.dot(view.eye));
-    if (out.camera) polygon.world = pts;
-    polygon.colour = out.camera ? base : shaded(base, std::abs(facing));
+    for (const Vec3& p : *pts)
+      polygon.points.push_back(view(p)), polygon.depth.push_back(view.depth(p));
+    if (out.camera) polygon.world = *pts;
+    polygon.colour = out.camera ? base : shaded(base, std::abs(n.dot(view.eye)));
     out.polygons.push_back(std::move(polygon));
   };
   // Faces of deformable blocks drawn by their zones' surface triangles (tris3 come grouped by

@@ -1,8 +1,9 @@
-// 3D models in a Scene: a parallel projection along the view's azimuth and elevation, faces
-// turned away dropped, the rest shaded by how squarely they face the viewer, each point with its
-// height towards the viewer, so that figures and the window hide what is behind by a depth
-// buffer (the faces come in no particular order). Contacts and arrows are drawn as in 2D from a
-// projected snapshot.
+// 3D models in a Scene: a parallel or perspective projection along the view's azimuth and
+// elevation (the window's camera), faces turned away from the eye dropped, the rest shaded by how
+// squarely they face the line of sight (the camera's headlight), each point with its height
+// towards the viewer, so that figures and the window hide what is behind by a depth buffer (the
+// faces come in no particular order). Contacts and arrows are drawn as in 2D from a projected
+// snapshot.
 #pragma once
 
 #include <functional>
@@ -12,13 +13,43 @@
 
 namespace tessera::ui {
 
-// The view's axes: right and up on the screen, and towards the viewer (the eye).
+// The window camera's view angle in perspective (degrees, VTK's default).
+constexpr double kViewAngle = 30.0;
+
+// The view's axes: right and up on the screen, and towards the viewer (the eye). In
+// perspective the eye is `distance` from `focus` along `eye`, and points are drawn where the line
+// to the eye crosses the plane through the focus (the same size there as in parallel).
 struct ViewAxes {
   Vec3 right, up, eye;
-  ViewAxes(double azimuth, double elevation);  // degrees
-  explicit ViewAxes(const ViewOptions& o) : ViewAxes(o.azimuth, o.elevation) {}
-  Vec2 operator()(const Vec3& p) const { return {p.dot(right), p.dot(up)}; }
+  bool perspective = false;
+  Vec3 focus = Vec3::Zero();
+  double distance = 0;
+  ViewAxes(double azimuth, double elevation);  // degrees; parallel
+  // Perspective if the options ask for it and hold the camera (has_camera).
+  explicit ViewAxes(const ViewOptions& o);
+  Vec2 operator()(const Vec3& p) const;
+  // The height towards the viewer as a depth buffer takes it: p.eye in parallel; in perspective
+  // D h / (D - h), h the height above the focal plane (it grows with h, and varies linearly
+  // across a drawn triangle, so that interpolated depths are exact).
+  double depth(const Vec3& p) const;
+  // Whether a point lies in front of the eye (beyond a near plane at a hundredth of the distance).
+  bool in_front(const Vec3& p) const;
+  // How squarely a plane through p of unit normal n faces the eye (the cosine; > 0: towards it).
+  double facing(const Vec3& n, const Vec3& p) const;
 };
+
+// The window's camera fitted to points seen along (azimuth, elevation) in a viewport of this
+// aspect (width / height): the focal point (their box's middle), the half height shown there
+// in parallel (scale) and the eye's distance (far enough that a perspective view shows the same
+// at the focal point and every point, and outside the points' sphere).
+struct CameraFit {
+  Vec3 focus = Vec3::Zero();
+  double scale = 1, distance = 1;
+};
+CameraFit fit_camera(const std::vector<Vec3>& pts, double azimuth, double elevation, double aspect);
+// The options with the perspective camera set (has_camera): as given, or fitted to the shown
+// model as the window fits it in a 3:2 viewport. Unchanged unless perspective.
+ViewOptions with_camera(const Snapshot& s, const ViewOptions& o);
 
 // Points on a plane of normal n (the crossings of a convex polygon or polyhedron with it) as a
 // polygon turned about n, each point once; empty if fewer than three remain.

@@ -94,31 +94,17 @@ void VtkView::aimCamera() {
 }
 
 void VtkView::resetCamera3() {
-  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
-  for (const auto& p : scene_.polygons)
-    for (const Vec3& w : p.world) lo = lo.cwiseMin(w), hi = hi.cwiseMax(w);
-  if (!(hi.x() >= lo.x())) lo = hi = Vec3::Zero();
-  const Vec3 centre = 0.5 * (lo + hi);
-  const double radius = std::max(0.5 * (hi - lo).norm(), 1e-9);
-  // The scale that fits the projected model in the model's viewport.
-  const ViewAxes v = ViewAxes(azimuth_, elevation_);
-  double half_w = 1e-9, half_h = 1e-9;
-  for (const auto& p : scene_.polygons)
-    for (const Vec3& w : p.world) {
-      const Vec2 q = v(w - centre);
-      half_w = std::max(half_w, std::abs(q.x())), half_h = std::max(half_h, std::abs(q.y()));
-    }
+  std::vector<Vec3> pts;
+  for (const auto& p : scene_.polygons) pts.insert(pts.end(), p.world.begin(), p.world.end());
   const double w = width() * (kModelViewport[2] - kModelViewport[0]),
                h = height() * (kModelViewport[3] - kModelViewport[1]);
-  const double aspect = h > 0 ? w / h : 1.0;
+  const CameraFit fit = fit_camera(pts, azimuth_, elevation_, h > 0 ? w / h : 1.0);
+  const ViewAxes v = ViewAxes(azimuth_, elevation_);
   vtkCamera* cam = renderer_->GetActiveCamera();
-  const double scale = 1.08 * std::max(half_h, half_w / aspect);
-  cam->SetParallelScale(scale);
-  cam->SetFocalPoint(centre.data());
-  // Far enough that a perspective view shows the same at the focal point, and outside the model.
-  const double distance =
-      std::max(scale / std::tan(cam->GetViewAngle() * std::numbers::pi / 360), 1.5 * radius);
-  const Vec3 eye = centre + distance * v.eye;
+  cam->SetViewAngle(kViewAngle);
+  cam->SetParallelScale(fit.scale);
+  cam->SetFocalPoint(fit.focus.data());
+  const Vec3 eye = fit.focus + fit.distance * v.eye;
   cam->SetPosition(eye.data());
   cam->SetViewUp(v.up.data());
   cam->SetParallelProjection(!perspective_);
@@ -239,6 +225,13 @@ void VtkView::setPerspective(bool on) {
 
 bool VtkView::perspective() const {
   return perspective_;
+}
+
+void VtkView::camera3(Vec3& focus, double& distance) {
+  vtkCamera* cam = renderer_->GetActiveCamera();
+  double f[3];
+  cam->GetFocalPoint(f);
+  focus = Vec3(f[0], f[1], f[2]), distance = cam->GetDistance();
 }
 
 void VtkView::setSeeThrough(bool on) {

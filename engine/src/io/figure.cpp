@@ -32,4 +32,11 @@ bool parse_contact_show(const std::string& word, ContactShow& c) {
   return parse_name(contact_show_names(), word, c);
 }
 
+std::string set_perspective(ViewOptions& v, const std::string& word, int dim) {
+  if (dim != 3) return "perspective= draws 3D models in perspective; this model is 2D";
+  if (word != "on" && word != "off") return "write perspective=on or perspective=off";
+  v.perspective = word == "on";
+  return {};
+}
+
 }  // namespace tessera

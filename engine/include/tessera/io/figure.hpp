@@ -57,15 +57,27 @@ struct ViewOptions {
   bool has_window = false;  // a window in model coordinates, else the whole model
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
   std::string title;
-  // 3D models: where the (parallel) view looks from - azimuth clockwise from north (+y) and
-  // elevation above the horizon, in degrees. The window is then in view coordinates.
+  // 3D models: where the view looks from - azimuth clockwise from north (+y) and elevation
+  // above the horizon, in degrees. The window is then in view coordinates (in perspective, on
+  // the plane through the focal point across the line of sight).
   double azimuth = 210.0, elevation = 25.0;
+  // 3D models: a perspective view (the window's camera: a 30 degree view angle) rather than a
+  // parallel one. The eye is `distance` from `focus` towards the viewer when `has_camera` (a
+  // figure of the window's camera), else fitted to the model as the window fits it.
+  bool perspective = false;
+  bool has_camera = false;
+  Eigen::Vector3d focus = Eigen::Vector3d::Zero();
+  double distance = 0.0;
   // 3D models: a cut to look inside - what lies above the plane (on the side its upward normal
   // points to; for a vertical plane, towards its dip direction) is not drawn.
   bool cut = false;
   double cut_dip = 90.0, cut_dip_direction = 0.0;  // degrees, dip direction clockwise from north
   Eigen::Vector3d cut_point = Eigen::Vector3d::Zero();
 };
+
+// The `figure` keyword perspective=on|off for a model of `dim` dimensions: sets it, or returns
+// why not (not on or off; a 2D model, refused as view= and cut= are), else an empty string.
+std::string set_perspective(ViewOptions& v, const std::string& word, int dim);
 
 // One figure to write: PNG (pixels), SVG or PDF (the same size in points), by the extension.
 struct FigureRequest {

@@ -67,6 +67,8 @@ struct Scene {
   // (the camera's light shades it), with world points; figures are drawn in view coordinates.
   bool camera = false;
   double azimuth = 0, elevation = 0;  // 3D: the view it was built for (degrees)
+  // 3D: projected in perspective (figures draw no scale bar: lengths vary with depth).
+  bool perspective = false;
   bool deformable(int block) const {
     return block >= 0 && static_cast<size_t>(block) < deformable_blocks.size() &&
            deformable_blocks[static_cast<size_t>(block)];

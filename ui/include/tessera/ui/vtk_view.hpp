@@ -79,6 +79,8 @@ class VtkView : public QOpenGLWidget {
   // 3D: perspective or parallel projection (parallel by default).
   void setPerspective(bool on);
   bool perspective() const;
+  // 3D: the camera's focal point and the eye's distance from it, for figures of this view.
+  void camera3(Vec3& focus, double& distance);
   // 3D: block faces drawn translucent, so that the sub-contacts inside show.
   void setSeeThrough(bool on);
   bool seeThrough() const;
