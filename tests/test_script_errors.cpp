@@ -47,6 +47,32 @@ class TestScriptErrors : public QObject {
         has(error_of("damping kinetic 1.5"), "test:1: kinetic damping's alpha must be in [0, 1)"));
     QVERIFY(has(error_of("damping kinetic 0.2 0.3"), "unexpected word '0.3'"));
   }
+  void badBoltsAreNamed() {
+    const std::string two = std::string(kBase) +
+                            "block 0,0 2,0 2,1 0,1 material=rock\n"
+                            "block 0,1 2,1 2,2 0,2 material=rock\n";
+    QVERIFY(has(error_of(two + "bolt 5,5 6,6 ka=1e8 ks=1e7"),
+                "test:6: bolt 'bolt1' from (5, 5) to (6, 6) crosses no block"));
+    QVERIFY(has(error_of(two + "bolt 1,0.2 1,0.8 ka=1e8 ks=1e7 name=short"),
+                "test:6: bolt 'short' from (1, 0.2) to (1, 0.8) lies in block 1 (group (none)) "
+                "and crosses no joint"));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 1,1.5 ks=1e7"),
+                "test:6: a bolt (its axial stiffness, N/m) needs ka="));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 1,1.5 ka=1e8 ks=1e7 tension=-1"),
+                "yield forces and rupture displacement cannot be negative"));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 ka=1e8 ks=1e7"), "write 'bolt X,Y X,Y"));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 1,1.5 ka=1e8 ks=1e7 name=b\nbolt 1,0.5 1,1.5 ka=1e8 "
+                               "ks=1e7 name=b"),
+                "test:7: a bolt named 'b' exists already"));
+    QVERIFY(has(error_of(two + "bolt pattern joints=tunnel spacing=1 length=3 ka=1 ks=1"),
+                "no joint set, crack or opening is named 'tunnel'"));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 1,1.5 ka=1e8 ks=1e7\ncrack 0,0.5 2,0.5"),
+                "test:7: cut and join blocks before placing bolts"));
+    QVERIFY(has(error_of(two + "bolt 1,0.5 1,1.5 ka=1e8 ks=1e7\nhistory bolt_axial bolt=c"),
+                "test:7: no bolt is named 'c'"));
+    QVERIFY(has(error_of("dimension 3\nbolt 0,0 1,1 ka=1 ks=1"),
+                "'bolt' is not available in 3D models yet"));
+  }
   void badFactorOfSafetyIsNamed() {
     QVERIFY(has(error_of("solve fos joints=maybe"), "test:1: write joints=on or joints=off"));
     QVERIFY(has(error_of("solve fos cycles=1"), "the cycle limit of a trial must be"));

@@ -88,6 +88,32 @@ DialogSpec spec(const QString& name) {
              {"#b", "The opposite corner", "x,y m", "4,3", ""},
              core_name,
              core}};
+  // Rock bolts: the properties both dialogs share.
+  const std::vector<CommandField> bolt_props{
+      {"ka", "Axial stiffness", "N/m", "1e8", "per bolt; divided by the row spacing"},
+      {"ks", "Shear stiffness", "N/m", "1e7", ""},
+      {"tension", "Yield force in tension", "N", "2e5", "empty: none"},
+      {"shear", "Yield force in shear", "N", "1e5", "empty: none"},
+      {"rupture", "Axial displacement at rupture", "m", "", "empty: never"},
+      {"rowspacing", "Row spacing (out of plane)", "m", "1", ""},
+      {"name", "Name", "", "", "for histories"}};
+  if (name == "bolt") {
+    DialogSpec s{"Rock bolt",
+                 "bolt",
+                 {{"#a", "From", "x,y m", "0,0", ""}, {"#b", "To", "x,y m", "0,3", ""}}};
+    s.fields.insert(s.fields.end(), bolt_props.begin(), bolt_props.end());
+    return s;
+  }
+  if (name == "boltpattern") {
+    DialogSpec s{"Bolt pattern around an opening",
+                 "bolt pattern",
+                 {{"joints", "Opening", "", "", "its blocks deleted", "joint names"},
+                  {"spacing", "Spacing along the wall", "m", "1.5", ""},
+                  {"length", "Bolt length", "m", "4", ""},
+                  {"angles", "Between angles", "deg", "", "e.g. 0,180; empty: all round"}}};
+    s.fields.insert(s.fields.end(), bolt_props.begin(), bolt_props.end());
+    return s;
+  }
   if (name == "region")
     return {"Region (a box to cut)",
             "region",
@@ -298,7 +324,9 @@ DialogSpec spec3(const QString& name) {
             {{"#gx", "Along x", "m/s²", "0", ""},
              {"#gy", "Along y", "m/s²", "0", ""},
              {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
-  if (name == "rectangle" || name == "voronoi" || name == "arch") return {};
+  if (name == "rectangle" || name == "voronoi" || name == "arch" || name == "bolt" ||
+      name == "boltpattern")
+    return {};
   return spec(name);
 }
 

@@ -39,6 +39,8 @@ void MainWindow::buildModelMenu() {
                                                        {"wall", "&Wall…"},
                                                        {"arch", "&Arch…"},
                                                        {"zones", "&Zones…"},
+                                                       {"bolt", "Rock &bolt…"},
+                                                       {"boltpattern", "Bolt &pattern…"},
                                                        {"assign", "Assign to selection…"},
                                                        {"boundary", "&Boundary…"},
                                                        {"insitu", "&In-situ stress…"},

@@ -296,6 +296,27 @@ void copy_blocks3(const Model& m, Snapshot& s) {
 }
 }  // namespace
 
+namespace {
+void copy_bolts(const Model& m, Snapshot& s) {
+  const Reinforcement& R = m.support;
+  for (size_t b = 0; b < R.bolts.size(); ++b) {
+    SnapshotBolt o;
+    o.name = R.bolts[b].name;
+    for (const BoltPoint& p : bolt_path(m, b)) {
+      const auto e = static_cast<size_t>(p.element);
+      const bool crossing = p.element >= 0;
+      o.points.push_back(p.at);
+      o.block.push_back(crossing ? R.side_a[e].block
+                                 : (o.block.empty() ? R.bolts[b].end0 : R.bolts[b].end1).block);
+      o.axial.push_back(crossing ? R.axial[e] : 0.0);
+      o.shear.push_back(crossing ? R.shear[e] : 0.0);
+      o.state.push_back(crossing ? R.state[e] : 0);
+    }
+    s.bolts.push_back(std::move(o));
+  }
+}
+}  // namespace
+
 Snapshot make_snapshot(const Model& m, const std::string& title,
                        const std::vector<StageRecord>& stages) {
   Snapshot s;
@@ -361,6 +382,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     s.contacts.push_back(std::move(o));
   }
   set_joint_stretches(C, s);
+  copy_bolts(m, s);
   copy_zones(m, s);
   copy_catalogue(m, s);
   copy_stages(stages, s);

@@ -9,6 +9,7 @@
 #include "tessera/contact2d/interfaces.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
 
@@ -47,6 +48,13 @@ void resultants2d(Model& m) {
       B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
     }
   });
+  add_reinforcement_forces(m);
+}
+
+// Joint forces, then the bolts across them.
+void joint_forces2d(Model& m) {
+  update_interfaces(m);
+  update_reinforcement(m);
 }
 
 // Twice the kinetic energy over free degrees of freedom, with the density-scaled inertia.
@@ -140,9 +148,10 @@ std::vector<std::array<double, 2>> block_steps2d(const Model& m, double k) {
   const Blocks& B = m.blocks;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<std::array<double, 2>> steps(B.size(), {kInf, kInf});
+  const std::vector<double> bolts = reinforcement_stiffness(m);
   for (size_t b = 0; b < B.size(); ++b) {
-    if (B.fixity[b] == kFixAll || k <= 0.0) continue;
-    const double kb = k * B.perimeter[b];
+    const double kb = k * B.perimeter[b] + bolts[b];
+    if (B.fixity[b] == kFixAll || kb <= 0.0) continue;
     if (B.inv_mass[b] > 0.0) steps[b][0] = 2.0 * std::sqrt(B.mass[b] / kb);
     if (B.inv_inertia[b] > 0.0)
       steps[b][1] = 2.0 * std::sqrt(B.inertia[b] / (kb * B.bound_radius[b] * B.bound_radius[b]));
@@ -164,7 +173,7 @@ const Backend& backend2d() {
   static const Backend be{.prepare = prepare2d,
                           .detect = detect_contacts,
                           .geometry = update_contact_geometry,
-                          .joint_forces = update_interfaces,
+                          .joint_forces = joint_forces2d,
                           .resultants = resultants2d,
                           .power = power2d,
                           .motion_energy = motion_energy2d,

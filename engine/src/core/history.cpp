@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 24> kNames{{
+constexpr std::array<QuantityName, 26> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -110,6 +110,8 @@ constexpr std::array<QuantityName, 24> kNames{{
     {HistoryQuantity::kSxz, "sxz", false},
     {HistoryQuantity::kSigma1, "sigma1", false},
     {HistoryQuantity::kSigma3, "sigma3", false},
+    {HistoryQuantity::kBoltAxial, "bolt_axial", false},
+    {HistoryQuantity::kBoltShear, "bolt_shear", false},
 }};
 
 // A zone's stress component or principal stress (2D: in the plane, as the pictures show).
@@ -160,6 +162,10 @@ bool is_zone_quantity(HistoryQuantity q) {
   return q >= HistoryQuantity::kSxx && q <= HistoryQuantity::kSigma3;
 }
 
+bool is_bolt_quantity(HistoryQuantity q) {
+  return q == HistoryQuantity::kBoltAxial || q == HistoryQuantity::kBoltShear;
+}
+
 const char* history_quantity_name(HistoryQuantity q) {
   for (const auto& n : kNames)
     if (n.q == q) return n.name;
@@ -192,6 +198,9 @@ std::string history_quantity_unit(HistoryQuantity q, int dim) {
     case HistoryQuantity::kTime:
     case HistoryQuantity::kTimestep:
       return "s";
+    case HistoryQuantity::kBoltAxial:
+    case HistoryQuantity::kBoltShear:
+      return dim == 3 ? "N" : "N/m";
     default:
       return "Pa";  // zone stresses
   }
@@ -207,6 +216,12 @@ double history_value(const Model& m, const HistorySeries& s) {
   const Blocks& B = m.blocks;
   // A block history whose block was deleted (-2) reads NaN from then on; so does a zone's.
   if (s.block == -2) return std::nan("");
+  if (is_bolt_quantity(s.quantity)) {
+    const Reinforcement& R = m.support;
+    if (s.element < 0 || static_cast<size_t>(s.element) >= R.size()) return std::nan("");
+    const auto e = static_cast<size_t>(s.element);
+    return s.quantity == HistoryQuantity::kBoltAxial ? R.axial[e] : R.shear[e];
+  }
   if (is_zone_quantity(s.quantity)) {
     const auto z = static_cast<size_t>(s.zone);
     if (m.dim == 3)

@@ -34,6 +34,7 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/core/random.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
 
@@ -152,6 +153,9 @@ int joint_tag(Model& m, const std::string& name) {
 static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_t>& in,
                            const std::vector<TaggedPolygon>& pieces,
                            const std::vector<size_t>& parents) {
+  if (!m.support.empty())
+    throw ModelError("cut and join blocks before placing bolts (bolt '" + m.support.bolts[0].name +
+                     "' is anchored in the blocks as they are)");
   m.blocks = Blocks{};
   auto copy_state = [&](size_t parent) {
     Blocks& B = m.blocks;
@@ -250,8 +254,9 @@ void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t b : blocks) doomed[b] = 1;
   const std::vector<uint32_t> old_begin = B.vert_begin;
-  drop_deformable(m, doomed);
+  const std::vector<int64_t> node_map = drop_deformable(m, doomed);
   const std::vector<int> map = B.remove(doomed);
+  remap_reinforcement(m, map, node_map);
   // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
   Contacts& C = m.contacts;
   Contacts kept;

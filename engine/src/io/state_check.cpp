@@ -238,6 +238,30 @@ void check_rest(Checker& c, const Model& m) {
     const size_t zones = m.dim == 3 ? m.continuum3.zones.size() : nz;
     c.require(h.zone >= -1 && h.zone < int64_t(zones),
               "history '" + h.label + "' names a zone that does not exist");
+    c.require(h.element >= -1 && h.element < int64_t(m.support.size()),
+              "history '" + h.label + "' names a bolt element that does not exist");
+  }
+  // Bolts: per-element arrays of one size, elements inside their bolts, anchors in the model.
+  const Reinforcement& R = m.support;
+  const size_t ne = R.bolt.size();
+  c.size(R.side_a, ne, "bolt anchors"), c.size(R.side_b, ne, "bolt anchors");
+  c.size(R.axis0, ne, "bolt axes"), c.size(R.axial, ne, "bolt forces");
+  c.size(R.shear, ne, "bolt forces"), c.size(R.ua, ne, "bolt displacements");
+  c.size(R.us, ne, "bolt displacements"), c.size(R.state, ne, "bolt states");
+  c.size(R.point, ne, "bolt points"), c.size(R.force, ne, "bolt forces");
+  auto anchor_ok = [&](const Anchor2& a) {
+    if (a.block < 0 || size_t(a.block) >= m.blocks.size()) return false;
+    for (int32_t n : a.node)
+      if (a.node[0] >= 0 && (n < 0 || size_t(n) >= nn)) return false;
+    return true;
+  };
+  for (size_t b = 0; b < R.bolts.size() && c.ok(); ++b) {
+    const Bolt& o = R.bolts[b];
+    c.require(size_t(o.first) + o.count <= ne && anchor_ok(o.end0) && anchor_ok(o.end1),
+              "bolt '" + o.name + "' names elements or rock that do not exist");
+    for (uint32_t e = o.first; e < o.first + o.count && c.ok(); ++e)
+      c.require(R.bolt[e] == b && anchor_ok(R.side_a[e]) && anchor_ok(R.side_b[e]),
+                "bolt '" + o.name + "' has an element anchored outside the model");
   }
   c.require(m.dim == 2 || m.dim == 3, "the dimension is neither 2 nor 3");
   c.require(m.det_x.empty() || m.det_x.size() == m.blocks.size(), "Verlet references differ");

@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 12;
+constexpr uint32_t kVersion = 13;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -196,6 +196,7 @@ void fields(IO& io, auto& m) {
   H.series.resize(count);
   for (auto& s : H.series)
     io.pod(s.quantity), io.pod(s.block), io.pod(s.node), io.str(s.label), io.pod(s.zone);
+  for (auto& s : H.series) io.pod(s.element);
   io.vec(H.cycles), io.vec(H.values);
   io.pod(m.cycle), io.pod(m.time), io.pod(m.dt), io.pod(m.dt_dirty), io.pod(m.global_c);
   io.vec(m.block_scale), io.pod(m.kinetic_last);
@@ -242,6 +243,17 @@ void fields(IO& io, auto& m) {
     io.pod(c.force_mag), io.pod(c.drift);
   }
   io.vec(m.det_pos3), io.vec(m.det_q3);
+  // Rock support.
+  auto& R = m.support;
+  count = R.bolts.size();
+  io.items(count);
+  R.bolts.resize(count);
+  for (auto& b : R.bolts) {
+    io.str(b.name), io.pod(b.props), io.pod(b.end0), io.pod(b.end1), io.pod(b.first);
+    io.pod(b.count);
+  }
+  io.vec(R.bolt), io.vec(R.side_a), io.vec(R.side_b), io.vec(R.axis0), io.vec(R.axial);
+  io.vec(R.shear), io.vec(R.ua), io.vec(R.us), io.vec(R.state), io.vec(R.point), io.vec(R.force);
 }
 
 }  // namespace

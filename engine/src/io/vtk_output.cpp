@@ -123,6 +123,42 @@ void write_contacts(const Model& m, const std::string& path) {
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
+// Bolts as polylines through their crossings: forces, displacements and state at each crossing
+// (zero at the ends), the bolt's number per segment.
+void write_support(const Model& m, const std::string& path) {
+  const Reinforcement& R = m.support;
+  std::vector<BoltPoint> pts;
+  std::vector<int32_t> seg_bolt;
+  std::vector<size_t> seg_start;
+  for (size_t b = 0; b < R.bolts.size(); ++b) {
+    const std::vector<BoltPoint> p = bolt_path(m, b);
+    for (size_t k = 0; k + 1 < p.size(); ++k)
+      seg_start.push_back(pts.size() + k), seg_bolt.push_back(static_cast<int32_t>(b + 1));
+    pts.insert(pts.end(), p.begin(), p.end());
+  }
+  const size_t n = pts.size(), ns = seg_start.size();
+  std::ofstream out = open_file(path);
+  begin_piece(out, n, ns, "Lines", [&](size_t k) { return pts[k].at; });
+  out << "<Lines>\n";
+  array(out, "Int64", "connectivity", 1, 2 * ns,
+        [&](size_t k) { return seg_start[k / 2] + k % 2; });
+  array(out, "Int64", "offsets", 1, ns, [](size_t s) { return 2 * (s + 1); });
+  out << "</Lines>\n<PointData Scalars=\"axial_force\">\n";
+  auto at = [&](const std::vector<double>& v) {
+    return [&](size_t k) { return pts[k].element >= 0 ? v[size_t(pts[k].element)] : 0.0; };
+  };
+  array(out, "Float64", "axial_force", 1, n, at(R.axial));
+  array(out, "Float64", "shear_force", 1, n, at(R.shear));
+  array(out, "Float64", "axial_displacement", 1, n, at(R.ua));
+  array(out, "Float64", "shear_displacement", 1, n, at(R.us));
+  array(out, "Int32", "state", 1, n,
+        [&](size_t k) { return pts[k].element >= 0 ? R.state[size_t(pts[k].element)] : 0; });
+  out << "</PointData>\n<CellData Scalars=\"bolt\">\n";
+  array(out, "Int32", "bolt", 1, ns, [&](size_t s) { return seg_bolt[s]; });
+  out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
 // 3D blocks: every face a polygon, carrying its block's data and its own joint tag.
 void write_blocks3(const Model& m, const std::string& path) {
   const Blocks3& B = m.blocks3;
@@ -321,9 +357,16 @@ void VtkSeries::write(const Model& m) {
       write_zones(m, dir_ + "/zones_" + name);
     }
   }
+  // Bolts likewise, from the first snapshot that has them (empty once they are all gone).
+  if (!m.support.empty() || support_from_ >= 0) {
+    if (support_from_ < 0) support_from_ = static_cast<int>(times_.size());
+    std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
+    write_support(m, dir_ + "/support_" + name);
+  }
   times_.push_back(m.time);
   write_collection("blocks");
   write_collection("contacts");
+  if (support_from_ >= 0) write_collection("support", static_cast<size_t>(support_from_));
   if (zones_from_ >= 0) write_collection("zones", static_cast<size_t>(zones_from_), zones_ext_);
 }
 

@@ -308,6 +308,11 @@ void Interpreter::cmd_history(Args& a) {
     s.zone = model_.dim == 3 ? nearest_zone(model_.continuum3, point3(at))
                              : nearest_zone(model_.continuum, point(at));
     if (s.zone < 0) fail("there are no zones: 'zone generate' makes blocks deformable");
+  } else if (is_bolt_quantity(s.quantity)) {
+    s.element = bolt_element(a);
+    s.label += "_" + model_.support.bolts[model_.support.bolt[static_cast<size_t>(s.element)]].name;
+    take(a, "label", s.label);
+    a.words.clear();
   } else {
     take(a, "label", s.label);
   }
@@ -343,7 +348,8 @@ void Interpreter::cmd_figure(Args& a) {
   if (a.words.size() != 1)
     fail(
         "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [vectors=on] "
-        "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [cut=DIP,DIPDIR,X,Y,Z] [title=\"...\"]'");
+        "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [perspective=on] [cut=DIP,DIPDIR,X,Y,Z] "
+        "[title=\"...\"]'");
   FigureRequest r;
   const std::string ext = fs::path(a.words[0]).extension().string();
   if (ext != ".png" && ext != ".svg" && ext != ".pdf")
@@ -394,6 +400,8 @@ void Interpreter::cmd_figure(Args& a) {
     if (!(r.view.cut_dip >= 0.0 && r.view.cut_dip <= 90.0))
       fail("the cut's dip must be between 0 and 90 degrees");
   }
+  if (take(a, "perspective", v))
+    if (const std::string e = set_perspective(r.view, v, model_.dim); !e.empty()) fail(e);
   if (take(a, "title", v)) {
     if (v.size() > 1 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
     r.view.title = v;

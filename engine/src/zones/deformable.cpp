@@ -9,6 +9,7 @@
 
 #include "tessera/core/geometry.hpp"
 #include "tessera/core/timestep.hpp"
+#include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
@@ -56,6 +57,8 @@ void ordered_outline(const ZoneMesh& mesh, const std::vector<Vec2>& poly,
 void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading) {
   Blocks& B = m.blocks;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  if (!m.support.empty())
+    throw std::invalid_argument("bolts are placed already: zone blocks before placing bolts");
   const int mat = B.material[b];
   if (mat < 0 || m.materials[static_cast<size_t>(mat)].zone.model.empty())
     throw std::invalid_argument(
@@ -146,7 +149,7 @@ std::vector<int> node_owners(const Model& m) {
   return owner;
 }
 
-void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
+std::vector<int64_t> drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
   const Blocks& B = m.blocks;
   Continuum& c = m.continuum;
   std::vector<uint8_t> drop(c.node_count(), 0);
@@ -154,7 +157,7 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
   for (size_t b = 0; b < B.size(); ++b)
     if (doomed[b] && B.deformable[b])
       for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) any = true;
-  if (!any) return;
+  if (!any) return {};
   // Nodes of a doomed block: every node of its zones.
   const std::vector<int> node_block = node_owners(m);
   std::vector<int64_t> map(c.node_count(), -1);
@@ -199,6 +202,7 @@ void drop_deformable(Model& m, const std::vector<uint8_t>& doomed) {
       if (n < 0) s.block = -2;
     }
   m.det_node.clear();
+  return map;
 }
 
 namespace {
@@ -284,6 +288,17 @@ std::vector<double> node_timesteps2(const Model& m) {
         if (c.mass[n] > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (kmax * share)));
       }
     }
+  // Bolts anchored in zones: each node against its share of the stiffer spring.
+  const Reinforcement& R = m.support;
+  for (size_t e = 0; e < R.size(); ++e) {
+    const BoltProperties& p = R.bolts[R.bolt[e]].props;
+    for (const Anchor2* a : {&R.side_a[e], &R.side_b[e]})
+      for (int k = 0; a->node[0] >= 0 && k < 3; ++k) {
+        const auto n = static_cast<size_t>(a->node[k]);
+        const double kn = a->w[k] * std::max(p.ka, p.ks);
+        if (c.mass[n] > 0 && kn > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / kn));
+      }
+  }
   return dt;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "tessera/core/step.hpp"
+#include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/deformable.hpp"
 #include "tessera/zones/deformable3.hpp"
 
@@ -25,6 +26,7 @@ ZoneMotion step_zones(Model& m, ContinuumT<D>& zc, const typename ContinuumT<D>:
   // and the blocks' outlines (2D) or corners and faces (3D) follow them.
   if constexpr (D == 2) {
     add_contact_forces_to_nodes(m);
+    add_reinforcement_forces_to_nodes(m);
   } else {
     add_contact_forces_to_nodes3(m);
   }

@@ -34,15 +34,18 @@ enum class HistoryQuantity : uint8_t {
   kSyz,
   kSxz,
   kSigma1,
-  kSigma3  // of one zone (tension positive; sigma1 the most compressive)
+  kSigma3,  // of one zone (tension positive; sigma1 the most compressive)
+  kBoltAxial,
+  kBoltShear  // at one crossing of a bolt (axial: tension positive)
 };
 
 struct HistorySeries {
   HistoryQuantity quantity = HistoryQuantity::kRatio;
-  int32_t block = -1;  // block index for block quantities
-  int32_t node = -1;   // continuum node, when the block is deformable
-  std::string label;   // CSV column heading
-  int32_t zone = -1;   // zone for zone quantities (-1 once it is deleted)
+  int32_t block = -1;    // block index for block quantities
+  int32_t node = -1;     // continuum node, when the block is deformable
+  std::string label;     // CSV column heading
+  int32_t zone = -1;     // zone for zone quantities (-1 once it is deleted)
+  int32_t element = -1;  // bolt element for bolt quantities (-1 once it is gone)
 };
 
 struct Histories {
@@ -64,6 +67,8 @@ const char* history_quantity_name(HistoryQuantity q);
 std::string history_quantity_unit(HistoryQuantity q, int dim);
 // Whether a quantity is a zone's stress (sampled in one zone, picked by a point).
 bool is_zone_quantity(HistoryQuantity q);
+// Whether a quantity is a bolt's force (sampled at one crossing, picked by bolt and point).
+bool is_bolt_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.
 std::vector<std::string> history_quantity_names();
 // Current value of one series.

@@ -17,6 +17,7 @@
 #include "tessera/core/history.hpp"
 #include "tessera/core/joint_law.hpp"
 #include "tessera/core/run_options.hpp"
+#include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/continuum.hpp"
 
 namespace tessera {
@@ -77,6 +78,8 @@ struct Model {
   Continuum continuum;
   // The same for deformable 3D blocks (tetrahedra); the blocks' surfaces are in Blocks3.
   Continuum3 continuum3;
+  // Rock support: bolts across joints (2D).
+  Reinforcement support;
 
   // Clock.
   uint64_t cycle = 0;

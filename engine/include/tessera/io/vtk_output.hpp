@@ -13,8 +13,9 @@ namespace tessera {
 
 class VtkSeries {
  public:
-  // Files go to `dir` (created if missing): blocks.pvd, contacts.pvd (and zones.pvd once there
-  // are deformable blocks) and one .vtp of each per snapshot (.vtu for 3D zones).
+  // Files go to `dir` (created if missing): blocks.pvd, contacts.pvd (zones.pvd once there are
+  // deformable blocks, support.pvd once there are bolts) and one .vtp of each per snapshot (.vtu
+  // for 3D zones).
   explicit VtkSeries(std::string dir);
   // Writes a snapshot of the model; throws std::runtime_error naming the file on failure.
   void write(const Model& m);
@@ -26,6 +27,7 @@ class VtkSeries {
   std::string dir_;
   std::vector<double> times_;
   int zones_from_ = -1;            // first snapshot with zones
+  int support_from_ = -1;          // first snapshot with bolts
   const char* zones_ext_ = "vtp";  // 2D zones are PolyData, 3D zones an UnstructuredGrid (.vtu)
 };
 

@@ -75,6 +75,7 @@ struct SavePoint {
 
 // One command line split into words; key=value words become keys.
 struct NodeBox;
+struct BoltProperties;
 
 struct Args {
   std::string command;
@@ -166,6 +167,11 @@ class Interpreter {
   void cmd_delete(Args&);
   void cmd_join(Args&);
   void cmd_check(Args&);
+  // Rock support (support_commands.cpp).
+  void cmd_bolt(Args&);
+  BoltProperties bolt_properties(Args& a);
+  // The bolt element a history names: bolt=NAME [at=X,Y] (the crossing nearest the point).
+  int32_t bolt_element(Args& a);
   // Deformable blocks (zone_commands.cpp).
   void cmd_zone(Args&);
   void cmd_boundary(Args&);

@@ -19,8 +19,9 @@ void sync_zone_materials(Model& m);
 void update_deformable_world(Model& m);
 // The block each node belongs to (-1 for none).
 std::vector<int> node_owners(const Model& m);
-// Drops the nodes and zones of the doomed blocks (before Blocks::remove with the same flags).
-void drop_deformable(Model& m, const std::vector<uint8_t>& doomed);
+// Drops the nodes and zones of the doomed blocks (before Blocks::remove with the same flags);
+// returns each old node's new number (-1 dropped), or nothing if no node changed.
+std::vector<int64_t> drop_deformable(Model& m, const std::vector<uint8_t>& doomed);
 // Velocity of a contact's side: of block a's corner, or of the point on block b's feature.
 Vec2 contact_side_velocity(const Model& m, size_t contact, bool side_b);
 // Adds the contact forces on deformable blocks to their nodes (continuum.force), gathered in

@@ -58,6 +58,16 @@ struct SnapshotZone {
   uint8_t state = 0;
 };
 
+// A bolt (2D): its ends and crossings in order, each with the block it is fixed in (for a
+// magnified shape) and the element's forces and state (zero at the ends).
+struct SnapshotBolt {
+  std::string name;
+  std::vector<Vec2> points;
+  std::vector<int> block;
+  std::vector<double> axial, shear;
+  std::vector<uint8_t> state;
+};
+
 // A named list of properties, for the model tree and property panel.
 struct Entry {
   std::string name;
@@ -77,6 +87,7 @@ struct Snapshot {
   std::vector<Vec2> local;  // block vertices relative to the centroid, unrotated
   std::vector<Vec2> start;  // deformable blocks: where each outline node started
   std::vector<SnapshotContact> contacts;
+  std::vector<SnapshotBolt> bolts;
   // Zones of deformable blocks, and their nodes as they are and as they started.
   std::vector<SnapshotZone> zones;
   std::vector<Vec2> nodes, nodes_start;
