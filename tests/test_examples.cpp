@@ -385,6 +385,32 @@ class TestExamples : public QObject {
     check_figure(r.dir + "/tunnel_displacement.png", QSize(1600, 1200));
     check_figure(r.dir + "/tunnel_contacts.pdf", QSize(1600, 1000));
   }
+  void boltsHoldTheRoofWedge() {
+    const Run r = run_example("tunnel_bolted", {}, dir_);
+    QCOMPARE(r.exit_code, 0);
+    auto h = read_history(r.dir);
+    const double free_fall = h["wedge_left"].back(), bolted = h["wedge_right"].back();
+    qInfo("unsupported wedge %.3f m, bolted wedge %.3g mm, bolt axial force %.4g N/m", free_fall,
+          1e3 * bolted, h["bolt_axial_right-2"].back());
+    QVERIFY(free_fall < -0.3);                      // the unsupported wedge falls out
+    QVERIFY(std::abs(bolted) < 2e-3);               // the bolts hold theirs within millimetres
+    QVERIFY(h["bolt_axial_right-2"].back() > 1e3);  // in tension
+    QString why;
+    QVERIFY2(check_vtp(r.dir + "/vtk/support_0000.vtp", why) > 0, qPrintable(why));
+    check_figure(r.dir + "/tunnel_bolted.png", QSize(1600, 900));
+    // The bolts are drawn (purple while elastic) over the right tunnel's roof, and only there.
+    const QImage img(r.dir + "/tunnel_bolted.png");
+    long left = 0, right = 0;
+    for (int py = 0; py < img.height(); ++py)
+      for (int px = 0; px < img.width() * 3 / 4; ++px) {
+        const QColor c = img.pixelColor(px, py);
+        if (c.red() > 140 && c.green() < 40 && c.blue() > 140)
+          ++(px < img.width() * 2 / 5 ? left : right);
+      }
+    qInfo("bolt pixels: %ld over the left tunnel, %ld over the right", left, right);
+    QVERIFY(right > 500);
+    QCOMPARE(left, 0L);
+  }
   void rockSlopeWedgeSlidesOnTheBedding() {
     const Run r = run_example("rock_slope", {}, dir_);
     QCOMPARE(r.exit_code, 0);
@@ -705,11 +731,12 @@ class TestExamples : public QObject {
     QVERIFY(yielded > 500);
   }
   void everyExampleIsChecked() {
-    const QStringList checked{"block_on_incline.tess", "brick_wall.tess", "brick_wall_3d.tess",
-                              "cantilever_3d.tess",    "column_3d.tess",  "deformable_arch.tess",
-                              "masonry_arch.tess",     "rock_slope.tess", "rock_wedge.tess",
-                              "toppling_stack.tess",   "tunnel_3d.tess",  "tunnel_deformable.tess",
-                              "tunnel_jointed.tess"};
+    const QStringList checked{
+        "block_on_incline.tess",  "brick_wall.tess",    "brick_wall_3d.tess",
+        "cantilever_3d.tess",     "column_3d.tess",     "deformable_arch.tess",
+        "masonry_arch.tess",      "rock_slope.tess",    "rock_wedge.tess",
+        "toppling_stack.tess",    "tunnel_3d.tess",     "tunnel_bolted.tess",
+        "tunnel_deformable.tess", "tunnel_jointed.tess"};
     QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
     QCOMPARE(found, checked);
   }

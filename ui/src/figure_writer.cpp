@@ -169,7 +169,10 @@ void paint_scene(QPainter& p, const Scene& s, const QRectF& area) {
   // Legends.
   const QRectF legend_box(plot.right() + m, plot.top(), legend_w, plot.height());
   const double used = paint_legend(p, s.blocks_legend, legend_box, font_px);
-  paint_legend(p, s.contacts_legend, legend_box.adjusted(0, used, 0, 0), font_px);
+  const double more =
+      paint_legend(p, s.contacts_legend, legend_box.adjusted(0, used, 0, 0), font_px);
+  if (!s.support_legend.title.empty())
+    paint_legend(p, s.support_legend, legend_box.adjusted(0, used + more, 0, 0), font_px);
   // Scale bar: a round length near a fifth of the plot width (none in perspective).
   const double len = nice_length(plot.width() / k / 5.0);
   const QPointF sb(plot.left(), plot.bottom() + 1.5 * m);

@@ -9,6 +9,7 @@
 
 #include "scene3d.hpp"
 #include "tessera/contact2d/contacts.hpp"
+#include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/continuum.hpp"
 
 namespace tessera::ui {
@@ -342,6 +343,49 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
 
 // Displacement arrows at block centroids, the longest a tenth of the model's size (3D: in
 // model coordinates, and projected for figures).
+// Bolts (2D) as narrow bars from crossing to crossing over the contacts: each segment in the
+// state of the worse crossing at its ends; the caption says the colours and the largest force.
+void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
+  if (s.bolts.empty()) return;
+  const Rgb elastic{170, 0, 170}, yielding{255, 140, 0}, broken{120, 120, 120};
+  const double w = 0.004 * size;
+  double fmax = 0.0;
+  size_t yielded = 0, crossings = 0;
+  for (const SnapshotBolt& b : s.bolts)
+    for (size_t k = 0; k < b.points.size(); ++k) {
+      fmax = std::max(fmax, std::abs(b.axial[k]));
+      if (k == 0 || k + 1 == b.points.size()) continue;
+      ++crossings, yielded += (b.state[k] & (kBoltAxialYield | kBoltShearYield)) != 0;
+    }
+  for (const SnapshotBolt& b : s.bolts)
+    for (size_t k = 0; k + 1 < b.points.size(); ++k) {
+      auto shown = [&](size_t i) {
+        const int blk = b.block[i];
+        if (o.magnify == 1.0 || blk < 0 || static_cast<size_t>(blk) >= s.blocks.size())
+          return b.points[i];
+        const SnapshotBlock& owner = s.blocks[static_cast<size_t>(blk)];
+        return Vec2(b.points[i] +
+                    (o.magnify - 1.0) * Vec2(owner.x - owner.x_ref, owner.y - owner.y_ref));
+      };
+      const Vec2 p = shown(k), q = shown(k + 1);
+      if (!((q - p).norm() > 0.0)) continue;
+      const Vec2 n = perp((q - p).normalized());
+      const uint8_t st = b.state[k] | b.state[k + 1];
+      SceneBar bar;
+      bar.colour = st & kBoltBroken                           ? broken
+                   : st & (kBoltAxialYield | kBoltShearYield) ? yielding
+                                                              : elastic;
+      bar.corners[0] = p - 0.5 * w * n, bar.corners[1] = q - 0.5 * w * n;
+      bar.corners[2] = q + 0.5 * w * n, bar.corners[3] = p + 0.5 * w * n;
+      out.bars.push_back(bar);
+    }
+  out.support_legend.title = "bolts";
+  out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}, {"broken", broken}};
+  out.caption += "   bolts: purple elastic, orange yielding (" + std::to_string(yielded) + " of " +
+                 std::to_string(crossings) + " crossings), grey broken; largest axial force " +
+                 number(fmax) + " N/m";
+}
+
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
   if (!o.vectors) return;
   const auto displacement = [&](const SnapshotBlock& b) {
@@ -449,6 +493,7 @@ Scene build_scene(const Snapshot& s, const ViewOptions& options, bool camera) {
   } else {
     const double size = std::max((s.hi - s.lo).norm(), 1e-9);
     add_contacts(s, o, out, size);
+    add_bolts(s, o, out, size);
     add_arrows(s, o, out, size);
     out.lo = s.lo, out.hi = s.hi;
   }

@@ -58,6 +58,7 @@ struct Scene {
   std::vector<SceneBar> bars;
   std::vector<SceneArrow> arrows;
   Legend blocks_legend, contacts_legend;
+  Legend support_legend;                      // bolts' states (2D), in figures below the others
   std::string title, caption;                 // caption: cycle, time, force scale
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // what to show
   double arrow_scale = 0;                     // drawn length per metre of displacement
