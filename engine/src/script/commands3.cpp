@@ -15,7 +15,8 @@ namespace tessera {
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
   static const std::map<std::string, Handler> h = [] {
     std::map<std::string, Handler> t = handlers();
-    for (const char* only2d : {"voronoi", "arch", "round", "bolt"}) t[only2d] = &Interpreter::cmd_only2d;
+    for (const char* only2d : {"voronoi", "arch", "round", "bolt"})
+      t[only2d] = &Interpreter::cmd_only2d;
     t["block"] = &Interpreter::cmd_block3;
     t["region"] = &Interpreter::cmd_region3;
     t["crack"] = &Interpreter::cmd_crack3;

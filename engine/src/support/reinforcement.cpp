@@ -6,6 +6,7 @@
 
 #include "tessera/core/model.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 
@@ -81,14 +82,7 @@ Anchor2 make_anchor(const Model& m, size_t b, Vec2 p) {
   }
   // The zone of this block holding p (or, on its outline, the nearest by its weights).
   const Continuum& c = m.continuum;
-  const std::vector<int> owner = [&] {
-    std::vector<int> o(c.node_count(), -1);
-    for (size_t k = 0; k < B.size(); ++k)
-      if (B.deformable[k])
-        for (uint32_t v = B.vert_begin[k]; v < B.vert_begin[k + 1]; ++v)
-          o[static_cast<size_t>(B.node[v])] = static_cast<int>(k);
-    return o;
-  }();
+  const std::vector<int> owner = node_owners(m);
   double best = -1e300;
   for (size_t z = 0; z < c.zone_count(); ++z) {
     const auto& t = c.zones[z];
@@ -98,8 +92,7 @@ Anchor2 make_anchor(const Model& m, size_t b, Vec2 p) {
     const double w1 = cross(p - p0, p2 - p0) / area, w2 = cross(p1 - p0, p - p0) / area;
     const double w0 = 1.0 - w1 - w2, worst = std::min({w0, w1, w2});
     if (worst <= best || worst < -1e-6) continue;
-    // Zones of other blocks are skipped: one of its corners on this block's outline suffices
-    // only if no corner belongs to another block.
+    // Zones of other blocks are skipped.
     bool other = false;
     for (uint32_t n : t) other |= owner[n] >= 0 && owner[n] != static_cast<int>(b);
     if (other) continue;
