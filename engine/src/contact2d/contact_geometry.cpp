@@ -21,6 +21,19 @@ inline double circle_chord(double d, double r1, double r2) {
   return k > 0.0 ? std::sqrt(k) / d : 0.0;
 }
 
+// Whether p lies inside block b's outline (crossing number over its world vertices).
+bool inside_outline(const Blocks& B, uint32_t b, const Vec2& p) {
+  bool in = false;
+  const uint32_t v0 = B.vert_begin[b], v1 = B.vert_begin[b + 1];
+  for (uint32_t i = v0, j = v1 - 1; i < v1; j = i++) {
+    const Vec2 &a = B.world_vertex[i], &c = B.world_vertex[j];
+    if ((a.y() > p.y()) != (c.y() > p.y()) &&
+        p.x() < (c.x() - a.x()) * (p.y() - a.y()) / (c.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
 }  // namespace
 
 bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool corners, int first,
@@ -38,6 +51,10 @@ bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool cor
     const uint32_t vk = v0 + static_cast<uint32_t>(f / 2);
     if (f % 2 == 1) {
       if (!edge_feature(B, b, vk, arc, max_depth, h, nullptr)) continue;
+      // Deep behind an edge's line (a tenth of the deepest contact allowed) yet outside the
+      // block: a corner beside a thin tip of the block, met at the tip's corner, not in it.
+      if (h.gap < -0.1 * max_depth && !inside_outline(B, b, h.point + 0.5 * h.gap * h.normal))
+        continue;
     } else {
       // Rounded corner: valid inside the cone of its two edge normals. A straight node of a
       // deformable block (no rounding) is met through the edges on either side of it.
