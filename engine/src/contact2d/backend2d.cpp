@@ -9,6 +9,7 @@
 #include "tessera/contact2d/interfaces.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/support/cables.hpp"
 #include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
@@ -51,10 +52,12 @@ void resultants2d(Model& m) {
   add_reinforcement_forces(m);
 }
 
-// Joint forces, then the bolts across them.
+// Joint forces, then the bolts across them and the cables (locally damped in static runs).
 void joint_forces2d(Model& m) {
   update_interfaces(m);
   update_reinforcement(m);
+  if (!m.cables.empty())
+    update_cables(m, m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha);
 }
 
 // Twice the kinetic energy over free degrees of freedom, with the density-scaled inertia.

@@ -133,12 +133,23 @@ std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
     };
     for (size_t i = 0; i < probe.contacts.size(); ++i)
       root[find(probe.contacts.a[i])] = find(probe.contacts.b[i]);
+    // Bolts and cables hold what they join.
+    const Reinforcement& R = m.support;
+    for (size_t e = 0; e < R.size(); ++e)
+      root[find(static_cast<size_t>(R.side_a[e].block))] =
+          find(static_cast<size_t>(R.side_b[e].block));
+    const Cables& K = m.cables;
+    for (size_t i = 0; i + 1 < K.size(); ++i)
+      if (K.cable[i] == K.cable[i + 1])
+        root[find(static_cast<size_t>(K.host[i].block))] =
+            find(static_cast<size_t>(K.host[i + 1].block));
     std::vector<uint8_t> held(B.size(), 0);
     for (size_t b = 0; b < B.size(); ++b)
       if (B.fixity[b] & (kFixX | kFixY)) held[find(b)] = 1;
     for (size_t b = 0; b < B.size(); ++b)
       if (!held[find(b)])
-        report(false, b, "nothing holds it up: no chain of contacts reaches a fixed block");
+        report(false, b,
+               "nothing holds it up: no chain of contacts, bolts or cables reaches a fixed block");
   }
   return out;
 }

@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 26> kNames{{
+constexpr std::array<QuantityName, 28> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -112,6 +112,8 @@ constexpr std::array<QuantityName, 26> kNames{{
     {HistoryQuantity::kSigma3, "sigma3", false},
     {HistoryQuantity::kBoltAxial, "bolt_axial", false},
     {HistoryQuantity::kBoltShear, "bolt_shear", false},
+    {HistoryQuantity::kCableAxial, "cable_axial", false},
+    {HistoryQuantity::kCableSlip, "cable_slip", false},
 }};
 
 // A zone's stress component or principal stress (2D: in the plane, as the pictures show).
@@ -166,6 +168,10 @@ bool is_bolt_quantity(HistoryQuantity q) {
   return q == HistoryQuantity::kBoltAxial || q == HistoryQuantity::kBoltShear;
 }
 
+bool is_cable_quantity(HistoryQuantity q) {
+  return q == HistoryQuantity::kCableAxial || q == HistoryQuantity::kCableSlip;
+}
+
 const char* history_quantity_name(HistoryQuantity q) {
   for (const auto& n : kNames)
     if (n.q == q) return n.name;
@@ -200,7 +206,10 @@ std::string history_quantity_unit(HistoryQuantity q, int dim) {
       return "s";
     case HistoryQuantity::kBoltAxial:
     case HistoryQuantity::kBoltShear:
+    case HistoryQuantity::kCableAxial:
       return dim == 3 ? "N" : "N/m";
+    case HistoryQuantity::kCableSlip:
+      return "m";
     default:
       return "Pa";  // zone stresses
   }
@@ -221,6 +230,12 @@ double history_value(const Model& m, const HistorySeries& s) {
     if (s.element < 0 || static_cast<size_t>(s.element) >= R.size()) return std::nan("");
     const auto e = static_cast<size_t>(s.element);
     return s.quantity == HistoryQuantity::kBoltAxial ? R.axial[e] : R.shear[e];
+  }
+  if (is_cable_quantity(s.quantity)) {
+    const Cables& K = m.cables;
+    if (s.element < 0 || static_cast<size_t>(s.element) >= K.size()) return std::nan("");
+    const auto i = static_cast<size_t>(s.element);
+    return s.quantity == HistoryQuantity::kCableAxial ? K.axial[i] : K.slip[i];
   }
   if (is_zone_quantity(s.quantity)) {
     const auto z = static_cast<size_t>(s.zone);

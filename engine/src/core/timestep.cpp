@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "backend.hpp"
+#include "tessera/support/cables.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
@@ -28,11 +29,11 @@ namespace {
 // nodes of deformable blocks.
 struct OwnSteps {
   std::vector<std::array<double, 2>> block;
-  std::vector<double> node;
+  std::vector<double> node, cable;
 };
 
 OwnSteps own_steps(const Model& m) {
-  return {backend(m).block_steps(m, stiffest_joint(m)), node_timesteps(m)};
+  return {backend(m).block_steps(m, stiffest_joint(m)), node_timesteps(m), cable_node_steps(m)};
 }
 
 // The step before the safety factor: the smallest of the own steps, or under density scaling
@@ -45,6 +46,10 @@ double base_step(const Model& m, const OwnSteps& s) {
       if (d < 1e300) all.push_back(d);
   for (double d : s.node)
     if (d < 1e300) all.push_back(d);
+  // Cable nodes take scaled inertia in static runs, unless nothing else moves.
+  if (m.settings.damping == DampingMode::kNone || all.empty())
+    for (double d : s.cable)
+      if (d < 1e300) all.push_back(d);
   if (all.empty()) return 1e300;
   if (!m.settings.dt_scaled) return *std::min_element(all.begin(), all.end());
   const auto mid = all.begin() + static_cast<long>(all.size() / 2);
@@ -74,6 +79,7 @@ void set_timestep(Model& m) {
   const OwnSteps s = own_steps(m);
   const double target = base_step(m, s);
   m.dt = safe_step(m, target);
+  scale_cable_nodes(m, m.dt);
   m.continuum.inertia = m.continuum.mass;
   m.continuum3.inertia = m.continuum3.mass;
   m.block_scale.clear();

@@ -238,8 +238,9 @@ void check_rest(Checker& c, const Model& m) {
     const size_t zones = m.dim == 3 ? m.continuum3.zones.size() : nz;
     c.require(h.zone >= -1 && h.zone < int64_t(zones),
               "history '" + h.label + "' names a zone that does not exist");
-    c.require(h.element >= -1 && h.element < int64_t(m.support.size()),
-              "history '" + h.label + "' names a bolt element that does not exist");
+    const size_t elements = is_cable_quantity(h.quantity) ? m.cables.size() : m.support.size();
+    c.require(h.element >= -1 && h.element < int64_t(elements),
+              "history '" + h.label + "' names a bolt element or cable node that does not exist");
   }
   // Bolts: per-element arrays of one size, elements inside their bolts, anchors in the model.
   const Reinforcement& R = m.support;
@@ -262,6 +263,24 @@ void check_rest(Checker& c, const Model& m) {
     for (uint32_t e = o.first; e < o.first + o.count && c.ok(); ++e)
       c.require(R.bolt[e] == b && anchor_ok(R.side_a[e]) && anchor_ok(R.side_b[e]),
                 "bolt '" + o.name + "' has an element anchored outside the model");
+  }
+  // Cables: per-node arrays of one size, nodes inside their cables, hosts in the model.
+  const Cables& K = m.cables;
+  const size_t nk = K.cable.size();
+  for (const auto* v : {&K.bonded, &K.slip, &K.slip_plastic, &K.vel, &K.inertia, &K.bond, &K.rest,
+                        &K.plastic, &K.axial})
+    c.size(*v, nk, "cable node values");
+  c.size(K.host, nk, "cable hosts"), c.size(K.state, nk, "cable states");
+  c.size(K.pos, nk, "cable nodes"), c.size(K.axis, nk, "cable axes");
+  c.size(K.host_force, nk, "cable forces");
+  for (size_t i = 0; i < K.cables.size() && c.ok(); ++i) {
+    const Cable& o = K.cables[i];
+    c.require(o.count >= 2 && size_t(o.first) + o.count <= nk,
+              "cable '" + o.name + "' names nodes that do not exist");
+    for (uint32_t k = o.first; k < o.first + o.count && c.ok(); ++k)
+      c.require(K.cable[k] == i && anchor_ok(K.host[k]) &&
+                    (k + 1 == o.first + o.count || K.rest[k] > 0.0),
+                "cable '" + o.name + "' has a node outside the model or a segment of no length");
   }
   c.require(m.dim == 2 || m.dim == 3, "the dimension is neither 2 nor 3");
   c.require(m.det_x.empty() || m.det_x.size() == m.blocks.size(), "Verlet references differ");

@@ -35,7 +35,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"check", &Interpreter::cmd_check},       {"reset", &Interpreter::cmd_reset},
       {"zone", &Interpreter::cmd_zone},         {"boundary", &Interpreter::cmd_boundary},
       {"insitu", &Interpreter::cmd_insitu},     {"model", &Interpreter::cmd_model},
-      {"bolt", &Interpreter::cmd_bolt},
+      {"bolt", &Interpreter::cmd_bolt},         {"cable", &Interpreter::cmd_cable},
   };
   return h;
 }

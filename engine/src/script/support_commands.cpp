@@ -1,8 +1,10 @@
-// Script commands of rock support: `bolt` (one bolt, or a pattern around an opening).
+// Script commands of rock support: `bolt` and `cable` (one, or a pattern around an opening).
 #include <algorithm>
+#include <cmath>
 
 #include "tessera/generation/generators.hpp"
 #include "tessera/script/script.hpp"
+#include "tessera/support/cables.hpp"
 #include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
@@ -25,6 +27,26 @@ BoltProperties Interpreter::bolt_properties(Args& a) {
   if (!(row > 0.0)) fail("the bolts' row spacing must be positive");
   // A 2D model is a slice 1 m thick: rows of bolts `row` apart act as 1/row of a bolt.
   p.ka /= row, p.ks /= row, p.tension /= row, p.compression /= row, p.shear /= row;
+  return p;
+}
+
+Interpreter::Pattern Interpreter::pattern_args(Args& a, const std::string& what) {
+  Pattern p;
+  std::string v;
+  if (!take(a, "joints", p.joints)) missing(a, "joints", "'" + what + "' (the opening's name)");
+  const auto& tags = model_.joint_tags;
+  const auto it = std::find(tags.begin(), tags.end(), p.joints);
+  if (it == tags.end()) fail("no joint set, crack or opening is named '" + p.joints + "'");
+  p.tag = static_cast<int>(it - tags.begin());
+  if (!take_num(a, "spacing", p.spacing)) missing(a, "spacing", "'" + what + "'");
+  if (!take_num(a, "length", p.length)) missing(a, "length", "'" + what + "'");
+  if (take(a, "angles", v)) {
+    const Vec2 r = point(v);
+    p.a0 = r.x(), p.a1 = r.y();
+  }
+  if (!(p.spacing > 0.0) || !(p.length > 0.0)) fail("the spacing and length must be positive");
+  if (!(p.a1 > p.a0))
+    fail("write angles=FROM,TO with TO above FROM (degrees, anticlockwise from +x)");
   return p;
 }
 
@@ -53,36 +75,20 @@ void Interpreter::cmd_bolt(Args& a) {
   std::string name;
   take(a, "name", name);
   const bool pattern = !a.words.empty() && a.words[0] == "pattern";
-  std::string joints;
-  if (pattern && !take(a, "joints", joints))
-    missing(a, "joints", "'bolt pattern' (the opening's name)");
+  const Pattern pat = pattern ? pattern_args(a, "bolt pattern") : Pattern{};
   // Default names: the opening's for a pattern (its bolts NAME-1, NAME-2, ...), boltN for one.
   if (name.empty())
-    name = pattern ? joints : "bolt" + std::to_string(model_.support.bolts.size() + 1);
+    name = pattern ? pat.joints : "bolt" + std::to_string(model_.support.bolts.size() + 1);
   for (const Bolt& b : model_.support.bolts)
     if (b.name == name || b.name.rfind(name + "-", 0) == 0)
       fail("a bolt named '" + name + "' exists already: give another name=");
   if (pattern) {
-    std::string v;
-    const auto& tags = model_.joint_tags;
-    const auto it = std::find(tags.begin(), tags.end(), joints);
-    if (it == tags.end()) fail("no joint set, crack or opening is named '" + joints + "'");
-    double spacing = 0.0, length = 0.0, a0 = -180.0, a1 = 180.0;
-    if (!take_num(a, "spacing", spacing)) missing(a, "spacing", "'bolt pattern'");
-    if (!take_num(a, "length", length)) missing(a, "length", "'bolt pattern'");
-    if (take(a, "angles", v)) {
-      const Vec2 r = point(v);
-      a0 = r.x(), a1 = r.y();
-    }
-    if (!(spacing > 0.0) || !(length > 0.0)) fail("the bolts' spacing and length must be positive");
-    if (!(a1 > a0))
-      fail("write angles=FROM,TO with TO above FROM (degrees, anticlockwise from +x)");
     const BoltProperties p = bolt_properties(a);
     a.words.erase(a.words.begin());
     done(a);
     const size_t before = model_.support.size();
-    const size_t n = install_bolt_pattern(model_, name, static_cast<int>(it - tags.begin()),
-                                          spacing, length, a0, a1, p);
+    const size_t n =
+        install_bolt_pattern(model_, name, pat.tag, pat.spacing, pat.length, pat.a0, pat.a1, p);
     log("bolt pattern '" + name + "': " + std::to_string(n) + " bolt(s), " +
         std::to_string(model_.support.size() - before) + " joint crossing(s)");
     return;
@@ -98,6 +104,97 @@ void Interpreter::cmd_bolt(Args& a) {
   const size_t b = install_bolt(model_, name, p0, p1, p);
   log("bolt '" + name + "': " + std::to_string(model_.support.bolts[b].count) +
       " joint crossing(s)");
+}
+
+CableProperties Interpreter::cable_properties(Args& a) {
+  CableProperties p;
+  if (!take_num(a, "ea", p.ea)) missing(a, "ea", "a cable (its axial stiffness E A, N)");
+  if (!take_num(a, "kbond", p.kbond))
+    missing(a, "kbond", "a cable (the grout's shear stiffness, N/m per m of cable)");
+  if (!take_num(a, "sbond", p.sbond))
+    missing(a, "sbond", "a cable (the grout's bond strength, N per m of cable; 0: none)");
+  take_num(a, "tension", p.tension);
+  p.compression = p.tension;
+  take_num(a, "compression", p.compression);
+  take_num(a, "pretension", p.pretension);
+  take_num(a, "mass", p.mass);
+  double row = 1.0;
+  take_num(a, "rowspacing", row);
+  if (!(p.ea > 0.0) || !(p.kbond > 0.0))
+    fail("a cable's stiffnesses ea and kbond must be positive");
+  if (p.tension < 0.0 || p.compression < 0.0 || p.sbond < 0.0 || p.mass < 0.0)
+    fail("a cable's yield forces, bond strength and mass cannot be negative (0: none)");
+  if (p.tension > 0.0 && p.pretension > p.tension)
+    fail("a cable's pretension cannot exceed its tensile yield force");
+  if (!(row > 0.0)) fail("the cables' row spacing must be positive");
+  // A 2D model is a slice 1 m thick: rows `row` apart act as 1/row of a cable.
+  for (double* v : {&p.ea, &p.tension, &p.compression, &p.kbond, &p.sbond, &p.pretension, &p.mass})
+    *v /= row;
+  return p;
+}
+
+int32_t Interpreter::cable_node(Args& a) {
+  const Cables& K = model_.cables;
+  std::string name, at;
+  if (!take(a, "cable", name)) missing(a, "cable", "a cable history (the cable's name)");
+  const auto it = std::find_if(K.cables.begin(), K.cables.end(),
+                               [&](const Cable& c) { return c.name == name; });
+  if (it == K.cables.end()) fail("no cable is named '" + name + "'");
+  // The node nearest the point, or the cable's first.
+  int32_t best = static_cast<int32_t>(it->first);
+  if (take(a, "at", at)) {
+    const Vec2 p = point(at);
+    double d = 1e300;
+    for (uint32_t i = it->first; i < it->first + it->count; ++i)
+      if ((K.pos[i] - p).norm() < d) d = (K.pos[i] - p).norm(), best = static_cast<int32_t>(i);
+  }
+  return best;
+}
+
+void Interpreter::cmd_cable(Args& a) {
+  std::string name;
+  take(a, "name", name);
+  const bool pattern = !a.words.empty() && a.words[0] == "pattern";
+  const Pattern pat = pattern ? pattern_args(a, "cable pattern") : Pattern{};
+  // Default names as for bolts: the opening's for a pattern, cableN for one.
+  const Cables& K = model_.cables;
+  if (name.empty()) name = pattern ? pat.joints : "cable" + std::to_string(K.cables.size() + 1);
+  for (const Cable& c : K.cables)
+    if (c.name == name || c.name.rfind(name + "-", 0) == 0)
+      fail("a cable named '" + name + "' exists already: give another name=");
+  double segments = 0.0, free = 0.0;
+  std::string head = "off";
+  if (!take_num(a, "segments", segments)) missing(a, "segments", "a cable (how many segments)");
+  if (!(segments >= 1.0) || segments != std::floor(segments) || segments > 10000)
+    fail("a cable's segments must be a whole number from 1 to 10000");
+  take_num(a, "free", free);
+  take(a, "head", head);
+  if (head != "on" && head != "off")
+    fail("write head=on (tied to the rock: a faceplate) or head=off");
+  if (free < 0.0) fail("a cable's free (unbonded) length cannot be negative");
+  const CableProperties p = cable_properties(a);
+  const int n = static_cast<int>(segments);
+  if (pattern) {
+    a.words.erase(a.words.begin());
+    done(a);
+    const size_t before = K.size();
+    const size_t placed = install_pattern(
+        model_, pat.tag, pat.spacing, pat.length, pat.a0, pat.a1, [&](size_t k, Vec2 p0, Vec2 p1) {
+          install_cable(model_, name + "-" + std::to_string(k), p0, p1, n, p, free, head == "on");
+        });
+    log("cable pattern '" + name + "': " + std::to_string(placed) + " cable(s), " +
+        std::to_string(K.size() - before) + " node(s)");
+    return;
+  }
+  if (a.words.size() != 2)
+    fail(
+        "write 'cable X,Y X,Y segments=N ea=.. kbond=.. sbond=.. [tension=..]' or 'cable pattern "
+        "joints=NAME spacing=S length=L segments=N ...'");
+  const Vec2 p0 = point(a.words[0]), p1 = point(a.words[1]);
+  a.words.clear();
+  done(a);
+  install_cable(model_, name, p0, p1, n, p, free, head == "on");
+  log("cable '" + name + "': " + std::to_string(n) + " segment(s)");
 }
 
 }  // namespace tessera

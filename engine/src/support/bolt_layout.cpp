@@ -1,6 +1,7 @@
 // Placing bolts: where a segment crosses joints between blocks, and patterns around openings.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "tessera/core/model.hpp"
@@ -15,17 +16,6 @@ std::string where(Vec2 p) {
   std::ostringstream s;
   s << "(" << p.x() << ", " << p.y() << ")";
   return s.str();
-}
-
-// The block holding p (inside its outline), or -1.
-int block_at(const Model& m, const std::vector<std::vector<Vec2>>& polys, Vec2 p) {
-  const Blocks& B = m.blocks;
-  for (size_t b = 0; b < polys.size(); ++b) {
-    const double r = B.bound_radius[b] * 1.01 + 1e-12;
-    if ((p - Vec2(B.x[b], B.y[b])).squaredNorm() > r * r) continue;
-    if (point_in_polygon(p, polys[b])) return static_cast<int>(b);
-  }
-  return -1;
 }
 
 // Parameters along p0-p1 where it crosses a block outline, sorted, with 0 and 1.
@@ -48,6 +38,17 @@ std::vector<double> crossings(const std::vector<std::vector<Vec2>>& polys, Vec2 
 }
 
 }  // namespace
+
+// The block holding p (inside its outline), or -1.
+int block_at(const Model& m, const std::vector<std::vector<Vec2>>& polys, Vec2 p) {
+  const Blocks& B = m.blocks;
+  for (size_t b = 0; b < polys.size(); ++b) {
+    const double r = B.bound_radius[b] * 1.01 + 1e-12;
+    if ((p - Vec2(B.x[b], B.y[b])).squaredNorm() > r * r) continue;
+    if (point_in_polygon(p, polys[b])) return static_cast<int>(b);
+  }
+  return -1;
+}
 
 size_t install_bolt(Model& m, const std::string& name, Vec2 p0, Vec2 p1,
                     const BoltProperties& props) {
@@ -92,8 +93,8 @@ size_t install_bolt(Model& m, const std::string& name, Vec2 p0, Vec2 p1,
   return m.support.bolts.size() - 1;
 }
 
-size_t install_bolt_pattern(Model& m, const std::string& name, int tag, double spacing,
-                            double length, double a0, double a1, const BoltProperties& props) {
+size_t install_pattern(Model& m, int tag, double spacing, double length, double a0, double a1,
+                       const std::function<void(size_t, Vec2, Vec2)>& place) {
   const Blocks& B = m.blocks;
   std::vector<std::vector<Vec2>> polys(B.size());
   for (size_t b = 0; b < B.size(); ++b) polys[b] = B.world_polygon(b);
@@ -118,7 +119,7 @@ size_t install_bolt_pattern(Model& m, const std::string& name, int tag, double s
   if (wall.empty())
     throw ModelError(
         "no wall of an excavated opening lies along the joints named: delete the "
-        "opening's blocks before placing a bolt pattern");
+        "opening's blocks before placing a pattern of bolts or cables");
   centre /= total;
   // Around the opening by angle, bolts every `spacing` along the wall, normal to it into rock.
   for (Edge& e : wall) {
@@ -140,8 +141,7 @@ size_t install_bolt_pattern(Model& m, const std::string& name, int tag, double s
       if (deg > a1) continue;
       ++tried;
       try {
-        install_bolt(m, name + "-" + std::to_string(tried), p - 1e-6 * length * in, p + length * in,
-                     props);
+        place(tried, p - 1e-6 * length * in, p + length * in);
         ++placed;
       } catch (const ModelError&) {
         // A bolt wholly inside one block carries nothing in this model.
@@ -149,8 +149,15 @@ size_t install_bolt_pattern(Model& m, const std::string& name, int tag, double s
     }
     along += l;
   }
-  if (tried == 0) throw ModelError("the bolt pattern's angles leave no room for a bolt");
+  if (tried == 0) throw ModelError("the pattern's angles leave no room for a bolt or cable");
   return placed;
+}
+
+size_t install_bolt_pattern(Model& m, const std::string& name, int tag, double spacing,
+                            double length, double a0, double a1, const BoltProperties& props) {
+  return install_pattern(m, tag, spacing, length, a0, a1, [&](size_t k, Vec2 p0, Vec2 p1) {
+    install_bolt(m, name + "-" + std::to_string(k), p0, p1, props);
+  });
 }
 
 }  // namespace tessera

@@ -6,6 +6,7 @@
 
 #include "tessera/core/model.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/support/cables.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
@@ -167,6 +168,16 @@ void add_reinforcement_forces(Model& m) {
       B.applied[b] += mag;
     }
   }
+  // Cable nodes' pull on rigid hosts, in node order.
+  const Cables& K = m.cables;
+  for (size_t i = 0; i < K.size(); ++i) {
+    const Anchor2& a = K.host[i];
+    if (a.node[0] >= 0) continue;
+    const auto b = static_cast<size_t>(a.block);
+    const Vec2 f = K.host_force[i], r = K.pos[i] - Vec2(B.x[b], B.y[b]);
+    B.fx[b] += f.x(), B.fy[b] += f.y(), B.moment[b] += cross(r, f);
+    B.applied[b] += f.norm();
+  }
 }
 
 void add_reinforcement_forces_to_nodes(Model& m) {
@@ -179,6 +190,12 @@ void add_reinforcement_forces_to_nodes(Model& m) {
       const Vec2 f = side ? Vec2(-R.force[e]) : R.force[e];
       for (int k = 0; k < 3; ++k) add_node_force(c, static_cast<size_t>(a.node[k]), a.w[k] * f);
     }
+  const Cables& K = m.cables;
+  for (size_t i = 0; i < K.size(); ++i) {
+    const Anchor2& a = K.host[i];
+    for (int k = 0; a.node[0] >= 0 && k < 3; ++k)
+      add_node_force(c, static_cast<size_t>(a.node[k]), a.w[k] * K.host_force[i]);
+  }
 }
 
 std::vector<double> reinforcement_stiffness(const Model& m) {
@@ -189,6 +206,9 @@ std::vector<double> reinforcement_stiffness(const Model& m) {
     for (const Anchor2* a : {&R.side_a[e], &R.side_b[e]})
       k[static_cast<size_t>(a->block)] += std::max(p.ka, p.ks);
   }
+  const Cables& K = m.cables;
+  for (size_t i = 0; i < K.size(); ++i)
+    k[static_cast<size_t>(K.host[i].block)] += cable_host_stiffness(m, i);
   return k;
 }
 
@@ -235,7 +255,8 @@ void remap_reinforcement(Model& m, const std::vector<int>& map,
   R = std::move(kept);
   // Histories at a crossing follow it; those at a removed one end.
   for (auto& s : m.histories.series)
-    if (s.element >= 0) s.element = element_map[static_cast<size_t>(s.element)];
+    if (s.element >= 0 && is_bolt_quantity(s.quantity))
+      s.element = element_map[static_cast<size_t>(s.element)];
 }
 
 }  // namespace tessera

@@ -57,8 +57,9 @@ void ordered_outline(const ZoneMesh& mesh, const std::vector<Vec2>& poly,
 void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading) {
   Blocks& B = m.blocks;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
-  if (!m.support.empty())
-    throw std::invalid_argument("bolts are placed already: zone blocks before placing bolts");
+  if (!m.support.empty() || !m.cables.empty())
+    throw std::invalid_argument(
+        "bolts or cables are placed already: zone blocks before placing support");
   const int mat = B.material[b];
   if (mat < 0 || m.materials[static_cast<size_t>(mat)].zone.model.empty())
     throw std::invalid_argument(
@@ -298,6 +299,16 @@ std::vector<double> node_timesteps2(const Model& m) {
         const double kn = a->w[k] * std::max(p.ka, p.ks);
         if (c.mass[n] > 0 && kn > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / kn));
       }
+  }
+  // Cable nodes hosted in zones: the same with their grout (or a tied head's segment).
+  for (size_t i = 0; i < m.cables.size(); ++i) {
+    const Anchor2& a = m.cables.host[i];
+    const double kc = cable_host_stiffness(m, i);
+    for (int k = 0; a.node[0] >= 0 && k < 3; ++k) {
+      const auto n = static_cast<size_t>(a.node[k]);
+      if (c.mass[n] > 0 && a.w[k] * kc > 0)
+        dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (a.w[k] * kc)));
+    }
   }
   return dt;
 }

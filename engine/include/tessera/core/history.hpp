@@ -36,7 +36,9 @@ enum class HistoryQuantity : uint8_t {
   kSigma1,
   kSigma3,  // of one zone (tension positive; sigma1 the most compressive)
   kBoltAxial,
-  kBoltShear  // at one crossing of a bolt (axial: tension positive)
+  kBoltShear,  // at one crossing of a bolt (axial: tension positive)
+  kCableAxial,
+  kCableSlip  // at one node of a cable (its segment's force, tension positive; grout slip)
 };
 
 struct HistorySeries {
@@ -45,7 +47,7 @@ struct HistorySeries {
   int32_t node = -1;     // continuum node, when the block is deformable
   std::string label;     // CSV column heading
   int32_t zone = -1;     // zone for zone quantities (-1 once it is deleted)
-  int32_t element = -1;  // bolt element for bolt quantities (-1 once it is gone)
+  int32_t element = -1;  // bolt element or cable node for support quantities (-1: gone)
 };
 
 struct Histories {
@@ -69,6 +71,8 @@ std::string history_quantity_unit(HistoryQuantity q, int dim);
 bool is_zone_quantity(HistoryQuantity q);
 // Whether a quantity is a bolt's force (sampled at one crossing, picked by bolt and point).
 bool is_bolt_quantity(HistoryQuantity q);
+// Whether a quantity is a cable's (sampled at one node, picked by cable and point).
+bool is_cable_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.
 std::vector<std::string> history_quantity_names();
 // Current value of one series.

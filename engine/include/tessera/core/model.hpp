@@ -17,6 +17,7 @@
 #include "tessera/core/history.hpp"
 #include "tessera/core/joint_law.hpp"
 #include "tessera/core/run_options.hpp"
+#include "tessera/support/cables.hpp"
 #include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/continuum.hpp"
 
@@ -80,6 +81,8 @@ struct Model {
   Continuum3 continuum3;
   // Rock support: bolts across joints (2D).
   Reinforcement support;
+  // Grouted cables (2D).
+  Cables cables;
 
   // Clock.
   uint64_t cycle = 0;

@@ -172,6 +172,17 @@ class Interpreter {
   BoltProperties bolt_properties(Args& a);
   // The bolt element a history names: bolt=NAME [at=X,Y] (the crossing nearest the point).
   int32_t bolt_element(Args& a);
+  // 'bolt pattern' and 'cable pattern': joints=OPENING spacing=S length=L [angles=A0,A1].
+  struct Pattern {
+    std::string joints;
+    int tag = -1;
+    double spacing = 0.0, length = 0.0, a0 = -180.0, a1 = 180.0;
+  };
+  Pattern pattern_args(Args& a, const std::string& what);
+  void cmd_cable(Args&);
+  CableProperties cable_properties(Args& a);
+  // The cable node a history names: cable=NAME [at=X,Y] (the node nearest the point).
+  int32_t cable_node(Args& a);
   // Deformable blocks (zone_commands.cpp).
   void cmd_zone(Args&);
   void cmd_boundary(Args&);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,14 @@ void remap_reinforcement(Model& m, const std::vector<int>& map,
 // Throws ModelError naming the bolt if it crosses no block or no joint.
 size_t install_bolt(Model& m, const std::string& name, Vec2 p0, Vec2 p1,
                     const BoltProperties& props);
+// The block whose outline (world polygons `polys`) holds p, or -1.
+int block_at(const Model& m, const std::vector<std::vector<Vec2>>& polys, Vec2 p);
+
+// Places bolts (or cables) of length L every `spacing` along the wall of an excavated opening:
+// calls place(k, p0, p1) for the k-th (from 1) with p0 on the wall and p1 in the rock; a place
+// that throws ModelError is skipped. Returns how many were placed (see install_bolt_pattern).
+size_t install_pattern(Model& m, int tag, double spacing, double length, double a0, double a1,
+                       const std::function<void(size_t, Vec2, Vec2)>& place);
 // Places bolts of length L every `spacing` along the wall of an excavated opening (the outline
 // edges along joint tag `tag` that face empty space), normal to the wall into the rock, within
 // the angles [a0, a1] (degrees, counter-clockwise from +x about the opening's centre). Returns

@@ -1,0 +1,194 @@
+// Grouted cables: a cable pulled from rock against the closed-form pull-out solution (elastic
+// grout, partly slipping grout, pull-out capacity), pretension through a faceplate, and the
+// cable kept through deletion, state files and bad input.
+#include <QtTest>
+#include <cmath>
+
+#include "support.hpp"
+#include "tessera/io/state_io.hpp"
+
+using namespace tessera;
+using tessera::test::ScriptRun;
+
+namespace {
+// A fixed rock block 4 m long (x from 0.5 to 4.5) and a free plate (x from 0 to 0.4, 1,000 kg
+// per metre) 0.1 m from it; a cable tied to the plate at x = 0.4 runs through the gap and the
+// whole rock, nodes every 0.1 m. EA = 1e8 N, kbond = 1e8 N/m/m: alpha = sqrt(kbond / EA) = 1/m,
+// alpha L = 4. The plate's weight along -x pulls the cable out.
+constexpr double kEA = 1e8, kBond = 1e8, kL = 4.0, kGap = 0.1;
+std::string pulled(const std::string& load, const std::string& extra = "") {
+  return "round 0.01\n"
+         "material define rock density=2500\n"
+         "joint define j kn=1e10 ks=1e10 friction=30\n"
+         "joint assign j\n"
+         "block 0.5,-1 4.5,-1 4.5,1 0.5,1 material=rock group=rock\n"
+         "block 0,-0.5 0.4,-0.5 0.4,0.5 0,0.5 material=rock group=plate\n"
+         "fix group=rock\n"
+         "cable 0.4,0 4.5,0 segments=41 ea=1e8 kbond=1e8 sbond=2e4 head=on name=c" +
+         extra + "\n" + load + "\n";
+}
+// The rock's cable nodes: the first at the rock face (x = 0.5), after the head and the gap.
+constexpr uint32_t kFace = 1;
+}  // namespace
+
+class TestCables : public QObject {
+  Q_OBJECT
+ private slots:
+  // Elastic grout (shear lag): N(x) = P sinh(alpha (L - x)) / sinh(alpha L) along the rock, and
+  // the cable enters the rock with the slip P / (EA alpha tanh(alpha L)). The cable's segments
+  // and grout springs every h = 0.1 m approximate it to about (alpha h)^2 / 12 = 0.1%.
+  void elasticPullOut() {
+    ScriptRun r;
+    r.run(pulled("gravity -10 0\nsolve ratio=1e-9"));
+    const Cables& K = r.model().cables;
+    const double P = 1000.0 * 10.0, alpha = std::sqrt(kBond / kEA);
+    qInfo("force across the gap %.6g N (load %.6g)", K.axial[0], P);
+    QVERIFY(std::abs(K.axial[0] - P) < 1e-6 * P);
+    const double slip = P / (kEA * alpha * std::tanh(alpha * kL));
+    qInfo("slip at the rock face %.6g m (closed form %.6g)", K.slip[kFace], slip);
+    QVERIFY(std::abs(K.slip[kFace] - slip) < 2e-3 * slip);
+    double worst = 0.0;
+    for (uint32_t i = kFace; i + 1 < K.size(); ++i) {
+      // A segment's force at its middle.
+      const double x = (i - kFace + 0.5) * 0.1;
+      const double n = P * std::sinh(alpha * (kL - x)) / std::sinh(alpha * kL);
+      worst = std::max(worst, std::abs(K.axial[i] - n) / P);
+    }
+    qInfo("largest error in the axial force along the cable: %.3g of the load", worst);
+    QVERIFY(worst < 3e-3);
+    // The plate moves by the slip and the stretch of the free length across the gap.
+    const Model& m = r.model();
+    const double moved = m.blocks.x_ref[1] - m.blocks.x[1];
+    QVERIFY(std::abs(moved - (slip + P * kGap / kEA)) < 2e-3 * moved);
+  }
+  // Past the bond strength sbond the grout slips over a length a from the face: there
+  // N = P - sbond x, beyond it the elastic solution with N(a) = (sbond / alpha) tanh(alpha
+  // (L - a)). So P = sbond a + (sbond / alpha) tanh(alpha (L - a)), and the cable enters the
+  // rock with slip sbond / kbond + (P a - sbond a^2 / 2) / EA. The plate is drawn out slowly
+  // (a load applied at once would overshoot and slip the grout further than the static answer).
+  void slippingGroutPullOut() {
+    ScriptRun r;
+    r.run(
+        pulled("fix group=plate\nvelocity group=plate vx=-0.02\nstep 2500\n"
+               "velocity group=plate vx=0\nstep 1000"));
+    const Cables& K = r.model().cables;
+    const double P = K.axial[0], s = 2e4, alpha = 1.0;
+    QVERIFY(P > 4e4 && P < 7e4);  // well into slip, short of the capacity 8e4
+    double lo = 0.0, hi = kL;     // bisection for a
+    for (int k = 0; k < 100; ++k) {
+      const double a = 0.5 * (lo + hi);
+      (s * a + s / alpha * std::tanh(alpha * (kL - a)) < P ? lo : hi) = a;
+    }
+    const double a = 0.5 * (lo + hi);
+    const double slip = s / kBond + (P * a - 0.5 * s * a * a) / kEA;
+    int yielding = 0;
+    for (uint32_t i = kFace; i < K.size(); ++i) yielding += K.slip_plastic[i] != 0.0;
+    qInfo(
+        "pulled with %.6g N: slipping length %.4g m (closed form %.4g), slip at the face %.6g m "
+        "(closed form %.6g)",
+        P, 0.1 * (yielding - 0.5), a, K.slip[kFace], slip);
+    QVERIFY(std::abs(K.slip[kFace] - slip) < 5e-3 * slip);
+    QVERIFY(std::abs(0.1 * (yielding - 0.5) - a) <= 0.1);
+    QVERIFY(std::abs(K.bond[kFace] - s) < 1e-3 * s);
+  }
+  // Pulled past its capacity the cable slides out through grout slipping everywhere; held there,
+  // the force across the gap settles at the bond strength times the bonded length, 8e4 N.
+  void pullOutCapacity() {
+    ScriptRun r;
+    r.run(
+        pulled("fix group=plate\nvelocity group=plate vx=-0.1\nstep 3000\n"
+               "velocity group=plate vx=0\nstep 2000"));
+    const Cables& K = r.model().cables;
+    qInfo("force at pull-out %.6g N (closed form %.6g)", K.axial[0], 2e4 * kL);
+    QVERIFY(std::abs(K.axial[0] - 2e4 * kL) < 1e-3 * 2e4 * kL);
+    for (uint32_t i = kFace; i < K.size(); ++i) QVERIFY(K.state[i] & kCableBondYield);
+  }
+  // A cable tensioned against its faceplate: the plate presses the rock with the pretension,
+  // less what the cable gives back as it shortens, and the grout beyond the free length holds it.
+  void pretensionHeldByTheGrout() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "block 0.4,-1 4.4,-1 4.4,1 0.4,1 material=rock group=rock\n"
+        "block 0,-0.5 0.4,-0.5 0.4,0.5 0,0.5 material=rock group=plate\n"
+        "fix group=rock\n"
+        "cable 0.2,0 4.4,0 segments=42 ea=1e8 kbond=1e8 sbond=1e5 head=on free=2.2 "
+        "pretension=5e4 name=c\nsolve ratio=1e-9");
+    const Model& m = r.model();
+    const Cables& K = m.cables;
+    // Shear lag in the bonded length Lb = 2 m, whose segments start at the pretension F0 and end
+    // free: N'' = alpha^2 (N - F0), N(Lb) = 0, N(0) = F; its start draws in by N'(0) / kbond.
+    // The free length Lf = 2.2 m shortens by that and by the joint's closure F / kj (kj = kn
+    // times the 1 m plate): F = F0 - EA / Lf times both, whence
+    // F = F0 (1 + (cosh - 1) / (Lf alpha sinh)) / (1 + 1 / (Lf alpha tanh) + EA / (Lf kj)).
+    const double F0 = 5e4, kj = 1e10 * 1.0, Lf = 2.2, Lb = 2.0, alpha = 1.0;
+    const double ch = std::cosh(alpha * Lb), sh = std::sinh(alpha * Lb);
+    const double F = F0 * (1.0 + (ch - 1.0) / (Lf * alpha * sh)) /
+                     (1.0 + ch / (Lf * alpha * sh) + kEA / (Lf * kj));
+    double grout = 0.0;
+    for (uint32_t i = 1; i < K.size(); ++i) grout += K.bond[i] * K.bonded[i];
+    qInfo("cable force at the plate %.6g N (closed form %.6g), grout total %.6g N", K.axial[0], F,
+          grout);
+    QVERIFY(std::abs(K.axial[0] - F) < 2e-3 * F);
+    QVERIFY(std::abs(grout - K.axial[0]) < 1e-4 * F);
+    // Nodes every 0.1 m from x = 0.2: the grout starts at node 22, x = 2.4.
+    for (uint32_t i = 0; i < 22; ++i) QCOMPARE(K.bonded[i], 0.0);
+    QCOMPARE(K.bonded[22], 0.05);
+  }
+  // Deleting the rock a cable runs through cuts it; the rest carries on, and state files keep
+  // it bit for bit.
+  void deletionAndStateFiles() {
+    ScriptRun r;
+    r.run(pulled("gravity -10 0\nstep 200\nhistory cable_axial cable=c at=3,0"));
+    Model& m = r.model();
+    const std::string path = QDir::tempPath().toStdString() + "/tessera_cables.state";
+    save_state(m, path);
+    Model back = restore_state(path);
+    QCOMPARE(back.cables.size(), m.cables.size());
+    QCOMPARE(back.cables.axial, m.cables.axial);
+    QCOMPARE(back.cables.cables[0].name, std::string("c"));
+    std::remove(path.c_str());
+    r.run("delete group=plate");
+    QCOMPARE(r.model().cables.cables.size(), size_t(1));
+    QCOMPARE(r.model().cables.size(), size_t(41));  // the head is gone with its plate
+    QCOMPARE(r.model().cables.cables[0].head, uint8_t(0));
+    QVERIFY(r.model().histories.series[0].element >= 0);
+    r.run("step 10\ndelete group=rock");
+    QCOMPARE(r.model().cables.size(), size_t(0));
+  }
+  // Bad input names the cable and what is wrong.
+  void badCablesAreNamed_data() {
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no segments") << "cable 1,0 4,0 ea=1e8 kbond=1e8 sbond=0"
+                                 << "segments";
+    QTest::newRow("no stiffness") << "cable 1,0 4,0 segments=3 kbond=1e8 sbond=0"
+                                  << "ea";
+    QTest::newRow("node in the air")
+        << "cable 1,0 8,0 segments=7 ea=1e8 kbond=1e8 sbond=0 name=long"
+        << "node 5 at (5, 0)";
+    QTest::newRow("taken name") << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 name=c"
+                                << "exists already";
+    QTest::newRow("pretension above yield")
+        << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 tension=1e4 pretension=2e4"
+        << "pretension";
+  }
+  void badCablesAreNamed() {
+    QFETCH(QString, line);
+    QFETCH(QString, message);
+    ScriptRun r;
+    r.run(pulled(""));
+    QString error;
+    try {
+      r.run(line.toStdString());
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    QVERIFY2(error.contains(message), qPrintable(error));
+    QCOMPARE(r.model().cables.cables.size(), size_t(1));  // nothing half placed
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCables)
+#include "test_cables.moc"
