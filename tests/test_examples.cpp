@@ -411,6 +411,34 @@ class TestExamples : public QObject {
     QVERIFY(right > 500);
     QCOMPARE(left, 0L);
   }
+  // The same wedges held by grouted cables, which carry the right wedge's weight in tension and
+  // are drawn over the right tunnel only.
+  void cablesHoldTheRoofWedge() {
+    const Run r = run_example("tunnel_cabled", {}, dir_);
+    QCOMPARE(r.exit_code, 0);
+    auto h = read_history(r.dir);
+    const double free_fall = h["wedge_left"].back(), held = h["wedge_right"].back();
+    const double axial = h["cable_axial_right-2"].back();
+    qInfo("unsupported wedge %.3f m, cabled wedge %.3g mm, cable axial force %.4g N/m", free_fall,
+          1e3 * held, axial);
+    QVERIFY(free_fall < -0.3);
+    QVERIFY(std::abs(held) < 2e-3);
+    QVERIFY(axial > 1e3);
+    QString why;
+    QVERIFY2(check_vtp(r.dir + "/vtk/support_0000.vtp", why) > 0, qPrintable(why));
+    check_figure(r.dir + "/tunnel_cabled.png", QSize(1600, 900));
+    const QImage img(r.dir + "/tunnel_cabled.png");
+    long left = 0, right = 0;
+    for (int py = 0; py < img.height(); ++py)
+      for (int px = 0; px < img.width() * 3 / 4; ++px) {
+        const QColor c = img.pixelColor(px, py);
+        if (c.red() > 140 && c.green() < 40 && c.blue() > 140)
+          ++(px < img.width() * 2 / 5 ? left : right);
+      }
+    qInfo("cable pixels: %ld over the left tunnel, %ld over the right", left, right);
+    QVERIFY(right > 2000);
+    QCOMPARE(left, 0L);
+  }
   void rockSlopeWedgeSlidesOnTheBedding() {
     const Run r = run_example("rock_slope", {}, dir_);
     QCOMPARE(r.exit_code, 0);

@@ -171,6 +171,18 @@ class TestReinforcement : public QObject {
       QVERIFY(p.norm() > 2.9 && p.norm() < 7.1);  // between the wall and the bolt's end
       QVERIFY(R.side_a[e].block != R.side_b[e].block);
     }
+    // Bolts NAME-k and NAME-(k+1) start one spacing apart along the wall (a chord of the
+    // polygonal wall: a little less), whichever way each wall edge's outline runs.
+    for (size_t i = 0; i + 1 < R.bolts.size(); ++i) {
+      const auto number = [](const std::string& n) {
+        return std::stoi(n.substr(n.rfind('-') + 1));
+      };
+      if (number(R.bolts[i + 1].name) != number(R.bolts[i].name) + 1) continue;
+      const double gap = (anchor_position(r.model(), R.bolts[i + 1].end0) -
+                          anchor_position(r.model(), R.bolts[i].end0))
+                             .norm();
+      QVERIFY2(gap > 0.95 && gap < 1.0 + 1e-9, qPrintable(QString::number(gap)));
+    }
   }
 };
 

@@ -114,6 +114,35 @@ DialogSpec spec(const QString& name) {
     s.fields.insert(s.fields.end(), bolt_props.begin(), bolt_props.end());
     return s;
   }
+  // Grouted cables: the properties both dialogs share.
+  const std::vector<CommandField> cable_props{
+      {"segments", "Segments", "", "8", "nodes at both ends of each"},
+      {"ea", "Axial stiffness E A", "N", "1e8", "per cable; divided by the row spacing"},
+      {"tension", "Yield force in tension", "N", "5e5", "empty: none"},
+      {"kbond", "Grout shear stiffness", "N/m/m", "1e8", "per metre of cable"},
+      {"sbond", "Grout bond strength", "N/m", "2e5", "per metre of cable; 0: none"},
+      {"pretension", "Pretension", "N", "", "empty: none"},
+      {"free", "Free (unbonded) length", "m", "", "from the head"},
+      {"head", "Faceplate at the head", "", "off", "on: tied to the rock"},
+      {"rowspacing", "Row spacing (out of plane)", "m", "1", ""},
+      {"name", "Name", "", "", "for histories"}};
+  if (name == "cable") {
+    DialogSpec s{"Grouted cable",
+                 "cable",
+                 {{"#a", "From", "x,y m", "0,0", "on the wall"}, {"#b", "To", "x,y m", "0,4", ""}}};
+    s.fields.insert(s.fields.end(), cable_props.begin(), cable_props.end());
+    return s;
+  }
+  if (name == "cablepattern") {
+    DialogSpec s{"Cable pattern around an opening",
+                 "cable pattern",
+                 {{"joints", "Opening", "", "", "its blocks deleted", "joint names"},
+                  {"spacing", "Spacing along the wall", "m", "1.5", ""},
+                  {"length", "Cable length", "m", "6", ""},
+                  {"angles", "Between angles", "deg", "", "e.g. 0,180; empty: all round"}}};
+    s.fields.insert(s.fields.end(), cable_props.begin(), cable_props.end());
+    return s;
+  }
   if (name == "region")
     return {"Region (a box to cut)",
             "region",
@@ -325,7 +354,7 @@ DialogSpec spec3(const QString& name) {
              {"#gy", "Along y", "m/s²", "0", ""},
              {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
   if (name == "rectangle" || name == "voronoi" || name == "arch" || name == "bolt" ||
-      name == "boltpattern")
+      name == "boltpattern" || name == "cable" || name == "cablepattern")
     return {};
   return spec(name);
 }

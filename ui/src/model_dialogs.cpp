@@ -41,6 +41,8 @@ void MainWindow::buildModelMenu() {
                                                        {"zones", "&Zones…"},
                                                        {"bolt", "Rock &bolt…"},
                                                        {"boltpattern", "Bolt &pattern…"},
+                                                       {"cable", "Grouted cab&le…"},
+                                                       {"cablepattern", "Cable pa&ttern…"},
                                                        {"assign", "Assign to selection…"},
                                                        {"boundary", "&Boundary…"},
                                                        {"insitu", "&In-situ stress…"},
@@ -166,9 +168,9 @@ CommandDialog* MainWindow::openDialog(const QString& name) {
     for (const auto& g : shown_->groups) groups << QString::fromStdString(g);
     for (const auto& m : shown_->materials) materials << QString::fromStdString(m.name);
     for (const auto& j : shown_->joints) joints << QString::fromStdString(j.name);
-    for (const auto& c : shown_->contacts)
-      if (!c.joint_set.empty() && !names.contains(QString::fromStdString(c.joint_set)))
-        names << QString::fromStdString(c.joint_set);
+    // Every joint set, crack and opening (an opening's wall has no contacts once excavated).
+    for (const auto& n : shown_->joint_names)
+      if (n != "split") names << QString::fromStdString(n);
   }
   d->setChoices("groups", groups);
   d->setChoices("materials", materials);

@@ -343,20 +343,28 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
 
 // Displacement arrows at block centroids, the longest a tenth of the model's size (3D: in
 // model coordinates, and projected for figures).
-// Bolts (2D) as narrow bars from crossing to crossing over the contacts: each segment in the
-// state of the worse crossing at its ends; the caption says the colours and the largest force.
+// Bolts and cables (2D) as narrow bars from crossing to crossing (node to node) over the
+// contacts: each segment in the state of the worse crossing at its ends; the caption says the
+// colours, how much is yielding and the largest force.
 void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
   if (s.bolts.empty()) return;
   const Rgb elastic{170, 0, 170}, yielding{255, 140, 0}, broken{120, 120, 120};
   const double w = 0.004 * size;
-  double fmax = 0.0;
-  size_t yielded = 0, crossings = 0;
-  for (const SnapshotBolt& b : s.bolts)
+  double fmax = 0.0, cmax = 0.0;
+  size_t yielded = 0, crossings = 0, bolts = 0, cables = 0, slipping = 0, nodes = 0;
+  for (const SnapshotBolt& b : s.bolts) {
+    (b.cable ? cables : bolts) += 1;
     for (size_t k = 0; k < b.points.size(); ++k) {
-      fmax = std::max(fmax, std::abs(b.axial[k]));
+      double& top = b.cable ? cmax : fmax;
+      top = std::max(top, std::abs(b.axial[k]));
+      if (b.cable) {
+        ++nodes, slipping += b.state[k] != 0;
+        continue;
+      }
       if (k == 0 || k + 1 == b.points.size()) continue;
       ++crossings, yielded += (b.state[k] & (kBoltAxialYield | kBoltShearYield)) != 0;
     }
+  }
   for (const SnapshotBolt& b : s.bolts)
     for (size_t k = 0; k + 1 < b.points.size(); ++k) {
       auto shown = [&](size_t i) {
@@ -379,11 +387,17 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
       bar.corners[2] = q + 0.5 * w * n, bar.corners[3] = p + 0.5 * w * n;
       out.bars.push_back(bar);
     }
-  out.support_legend.title = "bolts";
-  out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}, {"broken", broken}};
-  out.caption += "   bolts: purple elastic, orange yielding (" + std::to_string(yielded) + " of " +
-                 std::to_string(crossings) + " crossings), grey broken; largest axial force " +
-                 number(fmax) + " N/m";
+  out.support_legend.title = cables == 0 ? "bolts" : bolts == 0 ? "cables" : "bolts, cables";
+  out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}};
+  if (bolts > 0) out.support_legend.entries.push_back({"broken", broken});
+  if (bolts > 0)
+    out.caption += "   bolts: purple elastic, orange yielding (" + std::to_string(yielded) +
+                   " of " + std::to_string(crossings) +
+                   " crossings), grey broken; largest axial force " + number(fmax) + " N/m";
+  if (cables > 0)
+    out.caption += "   cables: purple elastic, orange yielding or grout slipping (" +
+                   std::to_string(slipping) + " of " + std::to_string(nodes) +
+                   " nodes); largest axial force " + number(cmax) + " N/m";
 }
 
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {

@@ -56,6 +56,7 @@ void add_node_conditions(const C& c, Snapshot& s) {
 
 void copy_catalogue(const Model& m, Snapshot& s) {
   s.groups = m.groups;
+  s.joint_names = m.joint_tags;
   for (const Material& mat : m.materials)
     s.materials.push_back({mat.name, {{"density", number(mat.density) + " kg/m³"}}});
   for (const JointProperties& j : m.joints)
@@ -311,6 +312,19 @@ void copy_bolts(const Model& m, Snapshot& s) {
       o.axial.push_back(crossing ? R.axial[e] : 0.0);
       o.shear.push_back(crossing ? R.shear[e] : 0.0);
       o.state.push_back(crossing ? R.state[e] : 0);
+    }
+    s.bolts.push_back(std::move(o));
+  }
+  const Cables& K = m.cables;
+  for (const Cable& c : K.cables) {
+    SnapshotBolt o;
+    o.name = c.name, o.cable = true;
+    for (uint32_t i = c.first; i < c.first + c.count; ++i) {
+      o.points.push_back(K.pos[i]);
+      o.block.push_back(K.host[i].block);
+      o.axial.push_back(K.axial[i]);
+      o.shear.push_back(0.0);
+      o.state.push_back(K.state[i] ? kBoltAxialYield : 0);
     }
     s.bolts.push_back(std::move(o));
   }

@@ -124,11 +124,14 @@ void write_contacts(const Model& m, const std::string& path) {
 }
 
 // Bolts as polylines through their crossings: forces, displacements and state at each crossing
-// (zero at the ends), the bolt's number per segment.
+// (zero at the ends), the bolt's number per segment. Then cables through their nodes: the axial
+// force of the segment from each node (zero at the last), the grout's slip and force per metre
+// at each node; `kind` 1 for a bolt's segments, 2 for a cable's, and its number.
 void write_support(const Model& m, const std::string& path) {
   const Reinforcement& R = m.support;
+  const Cables& K = m.cables;
   std::vector<BoltPoint> pts;
-  std::vector<int32_t> seg_bolt;
+  std::vector<int32_t> seg_bolt, seg_kind;
   std::vector<size_t> seg_start;
   for (size_t b = 0; b < R.bolts.size(); ++b) {
     const std::vector<BoltPoint> p = bolt_path(m, b);
@@ -136,6 +139,25 @@ void write_support(const Model& m, const std::string& path) {
       seg_start.push_back(pts.size() + k), seg_bolt.push_back(static_cast<int32_t>(b + 1));
     pts.insert(pts.end(), p.begin(), p.end());
   }
+  seg_kind.assign(seg_bolt.size(), 1);
+  const size_t first_node = pts.size();
+  for (size_t c = 0; c < K.cables.size(); ++c) {
+    const Cable& cab = K.cables[c];
+    for (uint32_t k = 0; k + 1 < cab.count; ++k) {
+      seg_start.push_back(pts.size() + k);
+      seg_bolt.push_back(static_cast<int32_t>(c + 1)), seg_kind.push_back(2);
+    }
+    for (uint32_t i = cab.first; i < cab.first + cab.count; ++i) pts.push_back({K.pos[i], -1});
+  }
+  // A cable node's value, or zero at a bolt's points.
+  auto node = [&](const std::vector<double>& v, bool last_zero) {
+    return [&, last_zero](size_t k) {
+      if (k < first_node) return 0.0;
+      const size_t i = k - first_node;
+      const bool last = i + 1 == K.size() || K.cable[i + 1] != K.cable[i];
+      return last && last_zero ? 0.0 : v[i];
+    };
+  };
   const size_t n = pts.size(), ns = seg_start.size();
   std::ofstream out = open_file(path);
   begin_piece(out, n, ns, "Lines", [&](size_t k) { return pts[k].at; });
@@ -147,14 +169,22 @@ void write_support(const Model& m, const std::string& path) {
   auto at = [&](const std::vector<double>& v) {
     return [&](size_t k) { return pts[k].element >= 0 ? v[size_t(pts[k].element)] : 0.0; };
   };
-  array(out, "Float64", "axial_force", 1, n, at(R.axial));
+  const auto cable_axial = node(K.axial, true);
+  array(out, "Float64", "axial_force", 1, n,
+        [&](size_t k) { return k < first_node ? at(R.axial)(k) : cable_axial(k); });
   array(out, "Float64", "shear_force", 1, n, at(R.shear));
   array(out, "Float64", "axial_displacement", 1, n, at(R.ua));
   array(out, "Float64", "shear_displacement", 1, n, at(R.us));
-  array(out, "Int32", "state", 1, n,
-        [&](size_t k) { return pts[k].element >= 0 ? R.state[size_t(pts[k].element)] : 0; });
-  out << "</PointData>\n<CellData Scalars=\"bolt\">\n";
-  array(out, "Int32", "bolt", 1, ns, [&](size_t s) { return seg_bolt[s]; });
+  array(out, "Float64", "bond_slip", 1, n, node(K.slip, false));
+  array(out, "Float64", "bond_force", 1, n, node(K.bond, false));
+  array(out, "Int32", "state", 1, n, [&](size_t k) {
+    return k >= first_node       ? int{K.state[k - first_node]}
+           : pts[k].element >= 0 ? int{R.state[size_t(pts[k].element)]}
+                                 : 0;
+  });
+  out << "</PointData>\n<CellData Scalars=\"kind\">\n";
+  array(out, "Int32", "kind", 1, ns, [&](size_t s) { return seg_kind[s]; });
+  array(out, "Int32", "number", 1, ns, [&](size_t s) { return seg_bolt[s]; });
   out << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
   if (!out) throw std::runtime_error(path + ": writing failed");
 }
@@ -358,7 +388,7 @@ void VtkSeries::write(const Model& m) {
     }
   }
   // Bolts likewise, from the first snapshot that has them (empty once they are all gone).
-  if (!m.support.empty() || support_from_ >= 0) {
+  if (!m.support.empty() || !m.cables.empty() || support_from_ >= 0) {
     if (support_from_ < 0) support_from_ = static_cast<int>(times_.size());
     std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
     write_support(m, dir_ + "/support_" + name);

@@ -178,12 +178,20 @@ void Interpreter::cmd_cable(Args& a) {
     a.words.erase(a.words.begin());
     done(a);
     const size_t before = K.size();
+    std::vector<std::string> skipped;
     const size_t placed = install_pattern(
         model_, pat.tag, pat.spacing, pat.length, pat.a0, pat.a1, [&](size_t k, Vec2 p0, Vec2 p1) {
-          install_cable(model_, name + "-" + std::to_string(k), p0, p1, n, p, free, head == "on");
+          try {
+            install_cable(model_, name + "-" + std::to_string(k), p0, p1, n, p, free, head == "on");
+          } catch (const ModelError& e) {
+            skipped.push_back(e.what());
+            throw;
+          }
         });
     log("cable pattern '" + name + "': " + std::to_string(placed) + " cable(s), " +
         std::to_string(K.size() - before) + " node(s)");
+    // A cable the pattern could not place is named with the reason.
+    for (const std::string& why : skipped) log("cable pattern '" + name + "': skipped " + why);
     return;
   }
   if (a.words.size() != 2)

@@ -132,8 +132,11 @@ size_t install_pattern(Model& m, int tag, double spacing, double length, double 
   double s = 0.5 * spacing, along = 0.0;
   for (const Edge& e : wall) {
     const double l = (e.b - e.a).norm();
+    // Along the wall anticlockwise about the centre, whichever way the block's outline runs.
+    const bool ccw = cross(e.a - centre, e.b - e.a) > 0.0;
+    const Vec2 from = ccw ? e.a : e.b, to = ccw ? e.b : e.a;
     for (; s < along + l; s += spacing) {
-      const Vec2 p = e.a + (s - along) / l * (e.b - e.a), in = perp(e.b - e.a) / l;
+      const Vec2 p = from + (s - along) / l * (to - from), in = perp(e.b - e.a) / l;
       const Vec2 r = p - centre;
       double deg = std::atan2(r.y(), r.x()) * 180.0 / M_PI;
       while (deg < a0) deg += 360.0;

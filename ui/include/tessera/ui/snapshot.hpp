@@ -59,9 +59,12 @@ struct SnapshotZone {
 };
 
 // A bolt (2D): its ends and crossings in order, each with the block it is fixed in (for a
-// magnified shape) and the element's forces and state (zero at the ends).
+// magnified shape) and the element's forces and state (zero at the ends). A cable: its nodes,
+// their hosts, the axial force of the segment from each node to the next, and kBoltAxialYield
+// where that segment yields or the node's grout slips.
 struct SnapshotBolt {
   std::string name;
+  bool cable = false;
   std::vector<Vec2> points;
   std::vector<int> block;
   std::vector<double> axial, shear;
@@ -92,6 +95,7 @@ struct Snapshot {
   std::vector<SnapshotZone> zones;
   std::vector<Vec2> nodes, nodes_start;
   std::vector<std::string> groups;
+  std::vector<std::string> joint_names;  // joint sets, cracks and openings, by tag
   std::vector<Entry> materials, joints, conditions, stages;
   // Histories, thinned to at most kHistoryRows rows spread over the whole run.
   static constexpr size_t kHistoryRows = 2000;
