@@ -438,6 +438,20 @@ class TestExamples : public QObject {
     qInfo("cable pixels: %ld over the left tunnel, %ld over the right", left, right);
     QVERIFY(right > 2000);
     QCOMPARE(left, 0L);
+    // Coloured by axial force over the crown: the cables across the wedge's joints are red
+    // (the top of the scale) where they cross, and none is drawn purple.
+    check_figure(r.dir + "/tunnel_cabled_force.png", QSize(1600, 900));
+    const QImage force(r.dir + "/tunnel_cabled_force.png");
+    long red = 0, purple = 0;
+    for (int py = 0; py < force.height(); ++py)
+      for (int px = 0; px < force.width() * 3 / 4; ++px) {
+        const QColor c = force.pixelColor(px, py);
+        red += c.red() > 190 && c.green() < 60 && c.blue() < 60;
+        purple += c.red() > 140 && c.green() < 40 && c.blue() > 140;
+      }
+    qInfo("force figure: %ld red pixels, %ld purple", red, purple);
+    QVERIFY(red > 100);
+    QCOMPARE(purple, 0L);
   }
   void rockSlopeWedgeSlidesOnTheBedding() {
     const Run r = run_example("rock_slope", {}, dir_);

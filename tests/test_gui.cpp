@@ -1263,6 +1263,18 @@ class TestGui : public QObject {
     QVERIFY2(w.journal().last().startsWith("cable pattern joints=t spacing=1 length=4"),
              qPrintable(w.journal().last()));
     QVERIFY(w.openDialog("cable"));
+    // Coloured by axial force, the support has its own scale beside the others.
+    QVERIFY(!w.view()->supportScaleShown());
+    ViewOptions o;
+    o.support_force = true;
+    w.setViewOptions(o);
+    QVERIFY(w.view()->supportScaleShown());
+    const auto caption = [&] {
+      return QString::fromStdString(w.view()->captionShown()).replace('\n', ' ');
+    };
+    QTRY_VERIFY2(caption().contains("cables: coloured by axial force"), qPrintable(caption()));
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/cables_force.png");
   }
 
   // A dialog whose command fails stays open with its fields and shows the error; corrected, it

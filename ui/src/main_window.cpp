@@ -189,6 +189,11 @@ void MainWindow::buildActions() {
   for (const auto& n : contact_show_names()) contacts_box_->addItem(QString::fromStdString(n));
   contacts_box_->setCurrentText("state");
   show->addWidget(contacts_box_);
+  show->addWidget(new QLabel(" Support ", show));
+  support_box_ = new QComboBox(show);
+  support_box_->addItems({"state", "force"});
+  support_box_->setToolTip("Bolts and cables coloured by state, or by axial force");
+  show->addWidget(support_box_);
   vectors_box_ = new QCheckBox("Vectors", show);
   show->addWidget(vectors_box_);
   show->addWidget(new QLabel(" Magnify ", show));
@@ -201,12 +206,14 @@ void MainWindow::buildActions() {
   auto changed = [this] {
     parse_colour_by(colour_box_->currentText().toStdString(), options_.colour);
     parse_contact_show(contacts_box_->currentText().toStdString(), options_.contacts);
+    options_.support_force = support_box_->currentText() == "force";
     options_.vectors = vectors_box_->isChecked();
     options_.magnify = magnify_box_->value();
     redraw();
   };
   connect(colour_box_, &QComboBox::currentTextChanged, this, changed);
   connect(contacts_box_, &QComboBox::currentTextChanged, this, changed);
+  connect(support_box_, &QComboBox::currentTextChanged, this, changed);
   connect(vectors_box_, &QCheckBox::toggled, this, changed);
   connect(magnify_box_, &QDoubleSpinBox::valueChanged, this, changed);
 
@@ -438,6 +445,7 @@ void MainWindow::setViewOptions(const ViewOptions& o) {
   options_ = o;
   colour_box_->setCurrentText(QString::fromStdString(colour_by_names()[size_t(o.colour)]));
   contacts_box_->setCurrentText(QString::fromStdString(contact_show_names()[size_t(o.contacts)]));
+  support_box_->setCurrentText(o.support_force ? "force" : "state");
   vectors_box_->setChecked(o.vectors);
   magnify_box_->setValue(o.magnify);
   if (auto* perspective = findChild<QAction*>("perspective"))

@@ -365,6 +365,11 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
       ++crossings, yielded += (b.state[k] & (kBoltAxialYield | kBoltShearYield)) != 0;
     }
   }
+  // Coloured by axial force: one scale for bolts and cables, compression to tension.
+  double flo = 0.0, fhi = 0.0;
+  for (const SnapshotBolt& b : s.bolts)
+    for (double f : b.axial) flo = std::min(flo, f), fhi = std::max(fhi, f);
+  if (!(fhi > flo)) fhi = flo + 1.0;
   for (const SnapshotBolt& b : s.bolts)
     for (size_t k = 0; k + 1 < b.points.size(); ++k) {
       auto shown = [&](size_t i) {
@@ -383,6 +388,13 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
       bar.colour = st & kBoltBroken                           ? broken
                    : st & (kBoltAxialYield | kBoltShearYield) ? yielding
                                                               : elastic;
+      if (o.support_force) {
+        // A cable's segment its own force; a bolt's the crossing's at either end of it.
+        const double f = b.cable || std::abs(b.axial[k]) >= std::abs(b.axial[k + 1])
+                             ? b.axial[k]
+                             : b.axial[k + 1];
+        bar.colour = ramp((f - flo) / (fhi - flo));
+      }
       bar.corners[0] = p - 0.5 * w * n, bar.corners[1] = q - 0.5 * w * n;
       bar.corners[2] = q + 0.5 * w * n, bar.corners[3] = p + 0.5 * w * n;
       out.bars.push_back(bar);
@@ -390,14 +402,26 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
   out.support_legend.title = cables == 0 ? "bolts" : bolts == 0 ? "cables" : "bolts, cables";
   out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}};
   if (bolts > 0) out.support_legend.entries.push_back({"broken", broken});
+  if (o.support_force) {
+    out.support_legend.title = "axial force [N/m]";  // the caption says of what
+    out.support_legend.entries.clear();
+    out.support_legend.continuous = true;
+    out.support_legend.lo = flo, out.support_legend.hi = fhi;
+  }
+  // The caption: what the colours mean, how much yields, the largest force.
+  const bool f = o.support_force;
   if (bolts > 0)
-    out.caption += "   bolts: purple elastic, orange yielding (" + std::to_string(yielded) +
-                   " of " + std::to_string(crossings) +
-                   " crossings), grey broken; largest axial force " + number(fmax) + " N/m";
+    out.caption += std::string("   bolts: ") +
+                   (f ? "coloured by axial force (tension positive); "
+                      : "purple elastic, orange yielding, grey broken; ") +
+                   std::to_string(yielded) + " of " + std::to_string(crossings) +
+                   " crossings yielding; largest axial force " + number(fmax) + " N/m";
   if (cables > 0)
-    out.caption += "   cables: purple elastic, orange yielding or grout slipping (" +
+    out.caption += std::string("   cables: ") +
+                   (f ? "coloured by axial force (tension positive); "
+                      : "purple elastic, orange yielding or grout slipping; ") +
                    std::to_string(slipping) + " of " + std::to_string(nodes) +
-                   " nodes); largest axial force " + number(cmax) + " N/m";
+                   " nodes yielding or slipping; largest axial force " + number(cmax) + " N/m";
 }
 
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {

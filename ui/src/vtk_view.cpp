@@ -184,7 +184,7 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
     a->GetProperty()->SetDiffuse(0.4);
     renderer_->AddActor(a);
   }
-  for (vtkScalarBarActor* bar : {scalar_bar_.Get(), contacts_bar_.Get()}) {
+  for (vtkScalarBarActor* bar : {scalar_bar_.Get(), contacts_bar_.Get(), support_bar_.Get()}) {
     bar->SetNumberOfLabels(5);
     bar->UnconstrainedFontSizeOn();
     bar->VisibilityOff();
@@ -268,6 +268,10 @@ std::string VtkView::captionShown() const {
 
 bool VtkView::contactScaleShown() const {
   return contacts_bar_->GetVisibility() != 0;
+}
+
+bool VtkView::supportScaleShown() const {
+  return support_bar_->GetVisibility() != 0;
 }
 
 void VtkView::placeAxes() {
@@ -376,14 +380,24 @@ void VtkView::rebuild() {
   const Legend& L = scene_.blocks_legend.continuous || !scene_.contacts_legend.continuous
                         ? scene_.blocks_legend
                         : scene_.contacts_legend;
+  // The support's force scale, when shown, takes the bottom third.
+  const bool support = scene_.support_legend.continuous;
+  const double top = 0.9, bottom = support ? 0.36 : 0.08;
+  const double h = both ? (top - bottom) / 2.0 - 0.02 : top - bottom - 0.05;
   set_legend(scalar_bar_, L);
-  scalar_bar_->SetPosition(0.87, both ? 0.52 : 0.1);
-  scalar_bar_->SetHeight(both ? 0.38 : 0.75);
+  scalar_bar_->SetPosition(0.87, top - h);
+  scalar_bar_->SetHeight(h);
   contacts_bar_->SetVisibility(both);
   if (both) {
     set_legend(contacts_bar_, scene_.contacts_legend);
-    contacts_bar_->SetPosition(0.87, 0.08);
-    contacts_bar_->SetHeight(0.38);
+    contacts_bar_->SetPosition(0.87, bottom);
+    contacts_bar_->SetHeight(h);
+  }
+  support_bar_->SetVisibility(support);
+  if (support) {
+    set_legend(support_bar_, scene_.support_legend);
+    support_bar_->SetPosition(0.87, 0.06);
+    support_bar_->SetHeight(0.26);
   }
   title_->SetInput(scene_.title.c_str());
   renderer_->ResetCameraClippingRange();

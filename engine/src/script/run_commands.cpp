@@ -352,7 +352,8 @@ void Interpreter::cmd_vtk(Args& a) {
 void Interpreter::cmd_figure(Args& a) {
   if (a.words.size() != 1)
     fail(
-        "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [vectors=on] "
+        "write 'figure FILE.png|.svg|.pdf [size=W,H] [colour=C] [contacts=S] [support=force] "
+        "[vectors=on] "
         "[magnify=F] [window=X0,Y0,X1,Y1] [view=AZ,EL] [perspective=on] [cut=DIP,DIPDIR,X,Y,Z] "
         "[title=\"...\"]'");
   FigureRequest r;
@@ -371,6 +372,10 @@ void Interpreter::cmd_figure(Args& a) {
     fail("'" + v + "' is not something blocks are coloured by" + suggest(v, colour_by_names()));
   if (take(a, "contacts", v) && !parse_contact_show(v, r.view.contacts))
     fail("'" + v + "' is not a way of showing contacts" + suggest(v, contact_show_names()));
+  if (take(a, "support", v)) {
+    if (v != "state" && v != "force") fail("write support=state or support=force");
+    r.view.support_force = v == "force";
+  }
   if (take(a, "vectors", v)) {
     if (v != "on" && v != "off") fail("write vectors=on or vectors=off");
     r.view.vectors = v == "on";

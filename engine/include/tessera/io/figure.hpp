@@ -52,9 +52,10 @@ bool parse_contact_show(const std::string& word, ContactShow& c);
 struct ViewOptions {
   ColourBy colour = ColourBy::kGroup;
   ContactShow contacts = ContactShow::kState;
-  bool vectors = false;     // displacement vectors at block centroids
-  double magnify = 1.0;     // deformed shape: displacements times this
-  bool has_window = false;  // a window in model coordinates, else the whole model
+  bool vectors = false;        // displacement vectors at block centroids
+  double magnify = 1.0;        // deformed shape: displacements times this
+  bool support_force = false;  // bolts and cables coloured by axial force, else by state
+  bool has_window = false;     // a window in model coordinates, else the whole model
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
   std::string title;
   // 3D models: where the view looks from - azimuth clockwise from north (+y) and elevation

@@ -158,7 +158,7 @@ class MainWindow : public QMainWindow {
   // A dialog whose command is running: closed when it succeeds, shown the error if it fails.
   QPointer<CommandDialog> waiting_dialog_;
   int waiting_ran_ = 0;  // its commands that have run
-  QComboBox *colour_box_, *contacts_box_;
+  QComboBox *colour_box_, *contacts_box_, *support_box_;
   QCheckBox* vectors_box_;
   QDoubleSpinBox* magnify_box_;
   QSpinBox* steps_box_;

@@ -71,6 +71,8 @@ class VtkView : public QOpenGLWidget {
   size_t updatedInPlace() const { return in_place_; }
   // Whether the contacts have a colour bar of their own (beside the blocks' or zones').
   bool contactScaleShown() const;
+  // Whether the support's axial force scale is shown (bolts and cables coloured by force).
+  bool supportScaleShown() const;
   // The caption as drawn (wrapped to the window).
   std::string captionShown() const;
   // The values the axes are labelled at, as last drawn (2D views).
@@ -154,7 +156,7 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkRenderer> frame_;  // title, caption and colour bars around the model's viewport
   // The model's viewport in the window (x0, y0, x1, y1, normalized).
   static constexpr double kModelViewport[4] = {0.08, 0.12, 0.78, 0.93};
-  vtkNew<vtkScalarBarActor> scalar_bar_, contacts_bar_;
+  vtkNew<vtkScalarBarActor> scalar_bar_, contacts_bar_, support_bar_;
   vtkNew<vtkAxisActor2D> x_axis_, y_axis_;
   std::vector<double> x_ticks_, y_ticks_;
   vtkNew<vtkTextActor> title_, caption_;
