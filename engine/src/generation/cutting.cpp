@@ -140,6 +140,107 @@ void clean(TaggedPolygon& p) {
   }
 }
 
+// A face of the arrangement inside an input polygon, its outline rounded to doubles.
+struct Piece {
+  Face face;
+  size_t parent;
+  TaggedPolygon poly;
+  double area;
+};
+
+// The outline of the faces for which `in` holds, walked from an edge of the first face: one
+// simple polygon, or empty if it is not one (a hole, two parts, or parts touching at a point).
+template <class In>
+TaggedPolygon outline_of(const std::vector<Face>& faces, const In& in) {
+  std::map<Arrangement::Vertex_const_handle, Halfedge> next_from;
+  std::vector<Halfedge> order;
+  for (Face f : faces)
+    for (Halfedge e : boundary(f->outer_ccb()))
+      if (!in(e->twin()->face())) {
+        if (!next_from.emplace(e->source(), e).second) return {};
+        order.push_back(e);
+      }
+  if (order.empty()) return {};
+  TaggedPolygon out;
+  Halfedge e = order[0];
+  do {
+    out.points.push_back(rounded(e->source()->point()));
+    out.edge_tags.push_back(edge_tag(e));
+    const auto it = next_from.find(e->target());
+    if (it == next_from.end() || out.points.size() > order.size()) return {};
+    e = it->second;
+  } while (e != order[0]);
+  if (out.points.size() != order.size()) return {};
+  return out;
+}
+
+// Merges each sliver (see SliverMerge) into a neighbour; `pieces` with `root[i] != i` are merged
+// into piece root[i], whose outline is then `joined[root]`. Round-off faces (area <= `tiny`) are
+// left to be dropped.
+void merge_slivers(const std::vector<Piece>& pieces, const std::map<Face, size_t>& index,
+                   const std::vector<CutLine>& cuts, const SliverMerge& merge, double tiny,
+                   std::vector<size_t>& root, std::map<size_t, TaggedPolygon>& joined,
+                   CutResult& out) {
+  // Closed cut lines are outlines (openings): no merge across them.
+  std::vector<int> outline_tags;
+  for (const CutLine& c : cuts)
+    if (c.points.size() > 3 && c.points.front() == c.points.back()) outline_tags.push_back(c.tag);
+  auto on_outline = [&](Halfedge e) {
+    for (int t : e->curve().data())
+      if (std::find(outline_tags.begin(), outline_tags.end(), t) != outline_tags.end()) return true;
+    return false;
+  };
+  auto kind = [&](size_t i) { return merge.kind.empty() ? 0 : merge.kind[pieces[i].parent]; };
+  // Pieces per parent (round-off faces aside): slivers come only from polygons a cut split.
+  std::map<size_t, size_t> count;
+  for (const Piece& p : pieces) count[p.parent] += p.area > tiny;
+  std::vector<size_t> slivers;
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (count[pieces[i].parent] > 1 && pieces[i].area < merge.min_area && pieces[i].area > tiny)
+      slivers.push_back(i);
+  std::stable_sort(slivers.begin(), slivers.end(),
+                   [&](size_t a, size_t b) { return pieces[a].area < pieces[b].area; });
+  std::vector<double> area;
+  std::map<size_t, std::vector<Face>> members;
+  for (const Piece& p : pieces) area.push_back(p.area);
+  for (size_t s : slivers) {
+    // Edge length shared with each neighbour big enough to take it, on the same side of outlines.
+    std::map<size_t, double> shared;
+    std::vector<size_t> barred;
+    for (Halfedge e : boundary(pieces[s].face->outer_ccb())) {
+      const auto it = index.find(e->twin()->face());
+      if (it == index.end()) continue;
+      const size_t r = root[it->second];
+      if (area[r] < merge.min_area || kind(r) != kind(s)) continue;
+      shared[r] += (rounded(e->target()->point()) - rounded(e->source()->point())).norm();
+      if (on_outline(e)) barred.push_back(r);
+    }
+    std::vector<std::pair<double, size_t>> by_length;
+    for (const auto& [r, len] : shared)
+      if (std::find(barred.begin(), barred.end(), r) == barred.end())
+        by_length.emplace_back(len, r);
+    std::stable_sort(by_length.begin(), by_length.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    bool done = false;
+    for (const auto& [len, r] : by_length) {
+      std::vector<Face>& faces = members[r];
+      if (faces.empty()) faces.push_back(pieces[r].face);
+      faces.push_back(pieces[s].face);
+      TaggedPolygon u = outline_of(faces, [&](Face f) {
+        const auto it = index.find(f);
+        return it != index.end() && (root[it->second] == r || it->second == s);
+      });
+      if (u.points.empty()) {
+        faces.pop_back();
+        continue;
+      }
+      root[s] = r, area[r] += area[s], joined[r] = std::move(u), done = true;
+      break;
+    }
+    ++(done ? out.slivers_merged : out.slivers_left);
+  }
+}
+
 }  // namespace
 
 Vec2 interior_point(const std::vector<Vec2>& pts) {
@@ -167,7 +268,7 @@ Vec2 interior_point(const std::vector<Vec2>& pts) {
 }
 
 CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::vector<CutLine>& cuts,
-                       double snap, int split_tag) {
+                       double snap, int split_tag, const SliverMerge& merge) {
   // Every polygon edge and cut segment, exactly.
   std::vector<Curve> curves;
   auto add = [&](const Vec2& a, const Vec2& b, int tag) {
@@ -217,25 +318,40 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
     }
     return -1;
   };
-  // Faces inside an input polygon become pieces.
-  struct Raw {
-    TaggedPolygon poly;
-    size_t parent;
-  };
-  std::vector<Raw> raw;
+  // Faces inside an input polygon are the pieces; slivers among them merge into neighbours.
+  std::vector<Piece> found;
+  std::map<Face, size_t> index;
   const Arrangement& carr = arr;
   for (auto f = carr.faces_begin(); f != carr.faces_end(); ++f) {
     if (f->is_unbounded()) continue;
     TaggedPolygon p;
     for (Halfedge e : boundary(f->outer_ccb())) {
-      const Point& s = e->source()->point();
-      p.points.push_back(rounded(s));
+      p.points.push_back(rounded(e->source()->point()));
       p.edge_tags.push_back(edge_tag(e));
     }
     if (p.points.size() < 3) continue;
     const long parent = parent_of(interior_point(p.points));
     if (parent < 0) continue;
-    raw.push_back({std::move(p), static_cast<size_t>(parent)});
+    index[f] = found.size();
+    const double a = signed_area(p.points);
+    found.push_back({f, static_cast<size_t>(parent), std::move(p), a});
+  }
+  CutResult out;
+  std::vector<size_t> root(found.size());
+  for (size_t i = 0; i < root.size(); ++i) root[i] = i;
+  std::map<size_t, TaggedPolygon> joined;
+  if (merge.min_area > 0.0)
+    merge_slivers(found, index, cuts, merge, 1e-12 * size * size, root, joined, out);
+  struct Raw {
+    TaggedPolygon poly;
+    size_t parent;
+  };
+  std::vector<Raw> raw;
+  for (size_t i = 0; i < found.size(); ++i) {
+    if (root[i] != i) continue;
+    const auto it = joined.find(i);
+    raw.push_back(
+        {it != joined.end() ? std::move(it->second) : std::move(found[i].poly), found[i].parent});
   }
   // Canonical order: by parent, then lowest vertex; each piece starts at its lowest vertex.
   auto lowest = [](const TaggedPolygon& p) {
@@ -259,7 +375,6 @@ CutResult cut_polygons(const std::vector<TaggedPolygon>& polygons, const std::ve
            std::make_tuple(b.parent, pb.x(), pb.y(), b.poly.points[1].x(), b.poly.points[1].y());
   });
   // Snap vertices within `snap` to the first one met, the same for every piece.
-  CutResult out;
   out.splits = splits;
   const double h = snap > 0.0 ? snap : 1e-12 * std::max(size, 1.0);
   std::unordered_map<int64_t, std::vector<Vec2>> grid;

@@ -29,7 +29,9 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <tuple>
 
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/core/random.hpp"
@@ -208,6 +210,11 @@ CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts,
   std::vector<TaggedPolygon> polys;
   std::vector<size_t> from;
   double size = 0.0;
+  // Pieces below the check's area limit (2 d)^2 merge only with pieces of the same group,
+  // material and fixity (see SliverMerge).
+  const double d = m.settings.rounding;
+  SliverMerge merge{4.0 * d * d, {}};
+  std::map<std::tuple<int, int, int>, int> kinds;
   for (size_t b = 0; b < old.size(); ++b) {
     size = std::max(size, 2.0 * old.bound_radius[b]);
     if (!in[b]) continue;
@@ -215,16 +222,18 @@ CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts,
         {old.world_polygon(b),
          {old.edge_tag.begin() + old.vert_begin[b], old.edge_tag.begin() + old.vert_begin[b + 1]}});
     from.push_back(b);
+    const auto key = std::make_tuple(old.group[b], old.material[b], int(old.fixity[b]));
+    merge.kind.push_back(kinds.emplace(key, static_cast<int>(kinds.size())).first->second);
   }
   // The split tag is named only if a split is made.
   const auto named = std::find(m.joint_tags.begin(), m.joint_tags.end(), "split");
   const int split_tag = static_cast<int>(named - m.joint_tags.begin());
-  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0), split_tag);
+  const CutResult r = cut_polygons(polys, cuts, 1e-9 * std::max(size, 1.0), split_tag, merge);
   if (r.splits > 0 && named == m.joint_tags.end()) m.joint_tags.push_back("split");
   std::vector<size_t> parents;
   for (size_t k = 0; k < r.pieces.size(); ++k) parents.push_back(from[r.parent[k]]);
   replace_blocks(m, old, in, r.pieces, parents);
-  return {r.slivers_dropped, r.splits};
+  return {r.slivers_dropped, r.splits, r.slivers_merged, r.slivers_left, merge.min_area};
 }
 
 void join_blocks(Model& m, const std::vector<size_t>& chosen) {

@@ -1,6 +1,7 @@
 // Script commands that generate and cut blocks, and the geometry checks.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "tessera/generation/generators.hpp"
 #include "tessera/script/expr.hpp"
@@ -21,6 +22,25 @@ double exit_distance(const Vec2& p, const Vec2& d, const std::vector<Vec2>& poly
     if (t > 0.0 && s >= 0.0 && s <= 1.0 && (!found || t < best)) best = t, found = true;
   }
   return best;
+}
+
+// What a cut did to slivers, as log lines.
+std::vector<std::string> sliver_report(const std::string& command, const CutReport& r) {
+  std::vector<std::string> out;
+  char limit[32];
+  std::snprintf(limit, sizeof limit, "%.3g", r.min_area);
+  // Round-off dropped at T-junctions of earlier cuts is reported by jset only, as before.
+  if (r.slivers_dropped && command == "jset")
+    out.push_back(command + ": " + std::to_string(r.slivers_dropped) +
+                  " sliver(s) below the snapping tolerance dropped");
+  if (r.slivers_merged)
+    out.push_back(command + ": " + std::to_string(r.slivers_merged) +
+                  " sliver(s) below the area limit " + limit + " merged into neighbouring blocks");
+  if (r.slivers_left)
+    out.push_back(command + ": " + std::to_string(r.slivers_left) +
+                  " sliver(s) below the area limit " + limit +
+                  " left: no neighbour of their group and side of the opening to merge with");
+  return out;
 }
 }  // namespace
 
@@ -79,7 +99,8 @@ void Interpreter::cmd_crack(Args& a) {
   a.words = rest;
   if (pts.size() < 2) fail("write 'crack X,Y X,Y [X,Y ...]' with at least two points");
   const CutTarget t = cut_target(a, "crack");
-  cut_blocks(model_, {CutLine{pts, joint_tag(model_, t.name)}}, t.selection);
+  const CutReport r = cut_blocks(model_, {CutLine{pts, joint_tag(model_, t.name)}}, t.selection);
+  for (const std::string& s : sliver_report("crack", r)) log(s);
   overlap_checked_ = false;
 }
 
@@ -120,9 +141,8 @@ void Interpreter::cmd_jset(Args& a) {
         }
       }
   }
-  const size_t dropped = cut_blocks(model_, traces, target.selection).slivers_dropped;
-  if (dropped)
-    log("jset: " + std::to_string(dropped) + " sliver(s) below the snapping tolerance dropped");
+  const CutReport r = cut_blocks(model_, traces, target.selection);
+  for (const std::string& s : sliver_report("jset", r)) log(s);
   overlap_checked_ = false;
 }
 
@@ -171,7 +191,9 @@ void Interpreter::cmd_tunnel(Args& a) {
   done(a);
   if (model_.blocks.size() == 0) fail("there are no blocks to cut: make a region first");
   outline.push_back(outline.front());
-  if (cut_blocks(model_, {CutLine{outline, joint_tag(model_, name)}}, {}).splits > 0)
+  const CutReport r = cut_blocks(model_, {CutLine{outline, joint_tag(model_, name)}}, {});
+  for (const std::string& s : sliver_report("tunnel", r)) log(s);
+  if (r.splits > 0)
     log("tunnel: the rock around the opening is split by a horizontal joint named 'split' (blocks "
         "cannot have holes); give it properties that keep it shut, e.g. 'joint assign NAME "
         "joints=split' with a high tensile strength and cohesion");
@@ -193,10 +215,11 @@ void Interpreter::cmd_voronoi(Args& a) {
   const CutTarget t = cut_target(a, "voronoi");
   if ((t.hi - t.lo).x() * (t.hi - t.lo).y() / (size * size) > 2e5)
     fail("that would make more than 200,000 cells");
-  cut_blocks(
+  const CutReport r = cut_blocks(
       model_,
       voronoi_traces(t.lo, t.hi, size, static_cast<uint64_t>(seed), joint_tag(model_, t.name)),
       t.selection);
+  for (const std::string& s : sliver_report("voronoi", r)) log(s);
   overlap_checked_ = false;
 }
 

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "tessera/generation/cutting.hpp"
 #include "tessera/script/expr.hpp"
 
 namespace fs = std::filesystem;
@@ -349,7 +350,7 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     ids.push_back(best);
     any = true;
   }
-  // Centroid inside a circle X,Y,R or a polygon (X,Y X,Y ...).
+  // Centroid inside a circle X,Y,R, or a point inside the block inside a polygon (X,Y X,Y ...).
   double cx = 0, cy = 0, cr = -1;
   if (take(a, "circle", v)) {
     if (three) fail("circle= selects blocks of 2D models; in 3D use x=, y=, z= ranges");
@@ -408,7 +409,9 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     if (B.x[b] < x0 || B.x[b] > x1 || B.y[b] < y0 || B.y[b] > y1) continue;
     if (smaller >= 0.0 && B.area[b] >= smaller) continue;
     if (cr >= 0.0 && std::hypot(B.x[b] - cx, B.y[b] - cy) > cr) continue;
-    if (!inside.empty() && !point_in_polygon(Vec2(B.x[b], B.y[b]), inside)) continue;
+    // A point inside the block, not its centroid (outside a concave block, e.g. one the
+    // opening's outline bites into).
+    if (!inside.empty() && !point_in_polygon(interior_point(B.world_polygon(b)), inside)) continue;
     if (joints >= 0 &&
         std::find(B.edge_tag.begin() + B.vert_begin[b], B.edge_tag.begin() + B.vert_begin[b + 1],
                   joints) == B.edge_tag.begin() + B.vert_begin[b + 1])

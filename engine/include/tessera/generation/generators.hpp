@@ -63,9 +63,13 @@ std::vector<CutLine> voronoi_traces(const Vec2& lo, const Vec2& hi, double size,
 // Cuts the chosen blocks (all if `chosen` is empty) along the lines; pieces keep their parent's
 // group, material and fixity. Only before the first cycle: blocks are renumbered 1, 2, ... and
 // contacts are made anew. A ring left around a hole is split by chords named "split" (joint
-// tags). Reports the slivers that snapping dropped and the chords added.
+// tags). A piece below the check's area limit (2 d)^2, d the rounding length, is merged into the
+// neighbour of its group, material and fixity it shares the most edge with, never across a closed
+// cut (an opening's outline). Reports the slivers dropped, merged and left, and the chords added.
 struct CutReport {
   size_t slivers_dropped = 0, splits = 0;
+  size_t slivers_merged = 0, slivers_left = 0;
+  double min_area = 0.0;  // the area below which a piece is a sliver
 };
 CutReport cut_blocks(Model& m, const std::vector<CutLine>& cuts, const std::vector<size_t>& chosen);
 
