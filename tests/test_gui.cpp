@@ -1263,6 +1263,13 @@ class TestGui : public QObject {
     QVERIFY2(w.journal().last().startsWith("cable pattern joints=t spacing=1 length=4"),
              qPrintable(w.journal().last()));
     QVERIFY(w.openDialog("cable"));
+    QPointer<CommandDialog> liner = w.openDialog("liner");
+    QVERIFY(liner && liner->choices("joints").contains("t"));
+    liner->setValue("joints", "t");
+    liner->accept();
+    QVERIFY(wait_finished(w));
+    QVERIFY2(w.journal().last().startsWith("liner joints=t e=30e9"),
+             qPrintable(w.journal().last()));
     // Coloured by axial force, the support has its own scale beside the others.
     QVERIFY(!w.view()->supportScaleShown());
     ViewOptions o;

@@ -143,6 +143,22 @@ DialogSpec spec(const QString& name) {
     s.fields.insert(s.fields.end(), cable_props.begin(), cable_props.end());
     return s;
   }
+  if (name == "liner")
+    return {"Liner on an opening's wall",
+            "liner",
+            {{"joints", "Opening", "", "", "its blocks deleted", "joint names"},
+             {"angles", "Between angles", "deg", "", "e.g. 0,180; empty: a closed ring"},
+             {"e", "Young's modulus", "Pa", "30e9", "or give ea= and ei= in the script"},
+             {"nu", "Poisson's ratio", "", "0.2", ""},
+             {"thickness", "Thickness", "m", "0.2", ""},
+             {"thrust", "Thrust capacity", "N", "", "per metre; empty: none"},
+             {"moment", "Moment capacity", "N m", "", "per metre; empty: none"},
+             {"kn", "Interface normal stiffness", "Pa/m", "1e10", ""},
+             {"ks", "Interface shear stiffness", "Pa/m", "1e10", "0: full slip"},
+             {"tension", "Interface tensile strength", "Pa", "", "empty: none"},
+             {"cohesion", "Interface cohesion", "Pa", "", ""},
+             {"friction", "Interface friction", "deg", "", ""},
+             {"name", "Name", "", "", "for histories"}}};
   if (name == "region")
     return {"Region (a box to cut)",
             "region",
@@ -354,7 +370,7 @@ DialogSpec spec3(const QString& name) {
              {"#gy", "Along y", "m/s²", "0", ""},
              {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
   if (name == "rectangle" || name == "voronoi" || name == "arch" || name == "bolt" ||
-      name == "boltpattern" || name == "cable" || name == "cablepattern")
+      name == "boltpattern" || name == "cable" || name == "cablepattern" || name == "liner")
     return {};
   return spec(name);
 }

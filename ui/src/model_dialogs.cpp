@@ -43,6 +43,7 @@ void MainWindow::buildModelMenu() {
                                                        {"boltpattern", "Bolt &pattern…"},
                                                        {"cable", "Grouted cab&le…"},
                                                        {"cablepattern", "Cable pa&ttern…"},
+                                                       {"liner", "&Liner…"},
                                                        {"assign", "Assign to selection…"},
                                                        {"boundary", "&Boundary…"},
                                                        {"insitu", "&In-situ stress…"},

@@ -352,7 +352,15 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
   const double w = 0.004 * size;
   double fmax = 0.0, cmax = 0.0;
   size_t yielded = 0, crossings = 0, bolts = 0, cables = 0, slipping = 0, nodes = 0;
+  size_t liners = 0, liner_nodes = 0, liner_yield = 0;
+  double lmax = 0.0;
   for (const SnapshotBolt& b : s.bolts) {
+    if (b.liner) {
+      ++liners;
+      for (size_t k = 0; k < b.points.size(); ++k)
+        ++liner_nodes, liner_yield += b.state[k] != 0, lmax = std::max(lmax, std::abs(b.axial[k]));
+      continue;
+    }
     (b.cable ? cables : bolts) += 1;
     for (size_t k = 0; k < b.points.size(); ++k) {
       double& top = b.cable ? cmax : fmax;
@@ -399,7 +407,10 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
       bar.corners[2] = q + 0.5 * w * n, bar.corners[3] = p + 0.5 * w * n;
       out.bars.push_back(bar);
     }
-  out.support_legend.title = cables == 0 ? "bolts" : bolts == 0 ? "cables" : "bolts, cables";
+  std::string kinds;
+  for (const auto& [n, what] : {std::pair{bolts, "bolts"}, {cables, "cables"}, {liners, "liners"}})
+    if (n > 0) kinds += (kinds.empty() ? "" : ", ") + std::string(what);
+  out.support_legend.title = kinds;
   out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}};
   if (bolts > 0) out.support_legend.entries.push_back({"broken", broken});
   if (o.support_force) {
@@ -422,6 +433,12 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
                       : "purple elastic, orange yielding or grout slipping; ") +
                    std::to_string(slipping) + " of " + std::to_string(nodes) +
                    " nodes yielding or slipping; largest axial force " + number(cmax) + " N/m";
+  if (liners > 0)
+    out.caption += std::string("   liners: ") +
+                   (f ? "coloured by axial force (tension positive); "
+                      : "purple elastic, orange at a capacity or slipping on the rock; ") +
+                   std::to_string(liner_yield) + " of " + std::to_string(liner_nodes) +
+                   " nodes yielding or slipping; largest thrust " + number(lmax) + " N/m";
 }
 
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {

@@ -328,6 +328,20 @@ void copy_bolts(const Model& m, Snapshot& s) {
     }
     s.bolts.push_back(std::move(o));
   }
+  const Liners& L = m.liners;
+  for (const Liner& l : L.liners) {
+    SnapshotBolt o;
+    o.name = l.name, o.cable = true, o.liner = true;
+    for (uint32_t k = 0; k < l.count + (l.closed ? 1u : 0u); ++k) {
+      const uint32_t i = l.first + k % l.count;
+      o.points.push_back(liner_position(L, i));
+      o.block.push_back(L.host[i].block);
+      o.axial.push_back(L.next(i) >= 0 ? L.axial[i] : 0.0);
+      o.shear.push_back(0.0);
+      o.state.push_back(L.state[i] ? kBoltAxialYield : 0);
+    }
+    s.bolts.push_back(std::move(o));
+  }
 }
 }  // namespace
 

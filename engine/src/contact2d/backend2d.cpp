@@ -52,12 +52,14 @@ void resultants2d(Model& m) {
   add_reinforcement_forces(m);
 }
 
-// Joint forces, then the bolts across them and the cables (locally damped in static runs).
+// Joint forces, then the bolts across them, the cables and liners (locally damped in static
+// runs).
 void joint_forces2d(Model& m) {
   update_interfaces(m);
   update_reinforcement(m);
-  if (!m.cables.empty())
-    update_cables(m, m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha);
+  const double alpha = m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha;
+  if (!m.cables.empty()) update_cables(m, alpha);
+  if (!m.liners.empty()) update_liners(m, alpha);
 }
 
 // Twice the kinetic energy over free degrees of freedom, with the density-scaled inertia.

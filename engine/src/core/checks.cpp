@@ -143,13 +143,18 @@ std::vector<Finding> check_geometry(const Model& m, const CheckLimits& lim) {
       if (K.cable[i] == K.cable[i + 1])
         root[find(static_cast<size_t>(K.host[i].block))] =
             find(static_cast<size_t>(K.host[i + 1].block));
+    const Liners& L = m.liners;
+    for (size_t i = 0; i + 1 < L.size(); ++i)
+      if (L.liner[i] == L.liner[i + 1])
+        root[find(static_cast<size_t>(L.host[i].block))] =
+            find(static_cast<size_t>(L.host[i + 1].block));
     std::vector<uint8_t> held(B.size(), 0);
     for (size_t b = 0; b < B.size(); ++b)
       if (B.fixity[b] & (kFixX | kFixY)) held[find(b)] = 1;
     for (size_t b = 0; b < B.size(); ++b)
       if (!held[find(b)])
         report(false, b,
-               "nothing holds it up: no chain of contacts, bolts or cables reaches a fixed block");
+               "nothing holds it up: no chain of contacts or support reaches a fixed block");
   }
   return out;
 }

@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 28> kNames{{
+constexpr std::array<QuantityName, 31> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -114,6 +114,9 @@ constexpr std::array<QuantityName, 28> kNames{{
     {HistoryQuantity::kBoltShear, "bolt_shear", false},
     {HistoryQuantity::kCableAxial, "cable_axial", false},
     {HistoryQuantity::kCableSlip, "cable_slip", false},
+    {HistoryQuantity::kLinerThrust, "liner_thrust", false},
+    {HistoryQuantity::kLinerMoment, "liner_moment", false},
+    {HistoryQuantity::kLinerPressure, "liner_pressure", false},
 }};
 
 // A zone's stress component or principal stress (2D: in the plane, as the pictures show).
@@ -172,6 +175,11 @@ bool is_cable_quantity(HistoryQuantity q) {
   return q == HistoryQuantity::kCableAxial || q == HistoryQuantity::kCableSlip;
 }
 
+bool is_liner_quantity(HistoryQuantity q) {
+  return q == HistoryQuantity::kLinerThrust || q == HistoryQuantity::kLinerMoment ||
+         q == HistoryQuantity::kLinerPressure;
+}
+
 const char* history_quantity_name(HistoryQuantity q) {
   for (const auto& n : kNames)
     if (n.q == q) return n.name;
@@ -210,6 +218,10 @@ std::string history_quantity_unit(HistoryQuantity q, int dim) {
       return dim == 3 ? "N" : "N/m";
     case HistoryQuantity::kCableSlip:
       return "m";
+    case HistoryQuantity::kLinerThrust:
+      return "N/m";
+    case HistoryQuantity::kLinerMoment:
+      return "N m/m";
     default:
       return "Pa";  // zone stresses
   }
@@ -236,6 +248,13 @@ double history_value(const Model& m, const HistorySeries& s) {
     if (s.element < 0 || static_cast<size_t>(s.element) >= K.size()) return std::nan("");
     const auto i = static_cast<size_t>(s.element);
     return s.quantity == HistoryQuantity::kCableAxial ? K.axial[i] : K.slip[i];
+  }
+  if (is_liner_quantity(s.quantity)) {
+    if (s.element < 0 || static_cast<size_t>(s.element) >= m.liners.size()) return std::nan("");
+    const auto i = static_cast<size_t>(s.element);
+    if (s.quantity == HistoryQuantity::kLinerPressure) return m.liners.pressure[i];
+    return s.quantity == HistoryQuantity::kLinerThrust ? liner_thrust(m.liners, i)
+                                                       : liner_moment(m.liners, i);
   }
   if (is_zone_quantity(s.quantity)) {
     const auto z = static_cast<size_t>(s.zone);

@@ -7,6 +7,7 @@
 
 #include "backend.hpp"
 #include "tessera/support/cables.hpp"
+#include "tessera/support/liners.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
@@ -29,11 +30,13 @@ namespace {
 // nodes of deformable blocks.
 struct OwnSteps {
   std::vector<std::array<double, 2>> block;
-  std::vector<double> node, cable;
+  std::vector<double> node, cable;  // cable: cable and liner nodes
 };
 
 OwnSteps own_steps(const Model& m) {
-  return {backend(m).block_steps(m, stiffest_joint(m)), node_timesteps(m), cable_node_steps(m)};
+  std::vector<double> support = cable_node_steps(m);
+  for (double d : liner_node_steps(m)) support.push_back(d);
+  return {backend(m).block_steps(m, stiffest_joint(m)), node_timesteps(m), support};
 }
 
 // The step before the safety factor: the smallest of the own steps, or under density scaling
@@ -80,6 +83,7 @@ void set_timestep(Model& m) {
   const double target = base_step(m, s);
   m.dt = safe_step(m, target);
   scale_cable_nodes(m, m.dt);
+  scale_liner_nodes(m, m.dt);
   m.continuum.inertia = m.continuum.mass;
   m.continuum3.inertia = m.continuum3.mass;
   m.block_scale.clear();

@@ -161,6 +161,9 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   if (!m.cables.empty())
     throw ModelError("cut and join blocks before placing cables (cable '" +
                      m.cables.cables[0].name + "' is anchored in the blocks as they are)");
+  if (!m.liners.empty())
+    throw ModelError("cut and join blocks before placing liners (liner '" +
+                     m.liners.liners[0].name + "' is anchored in the blocks as they are)");
   m.blocks = Blocks{};
   auto copy_state = [&](size_t parent) {
     Blocks& B = m.blocks;
@@ -270,6 +273,7 @@ void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
   const std::vector<int> map = B.remove(doomed);
   remap_reinforcement(m, map, node_map);
   remap_cables(m, map, node_map);
+  remap_liners(m, map, node_map);
   // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
   Contacts& C = m.contacts;
   Contacts kept;

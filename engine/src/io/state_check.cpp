@@ -238,7 +238,9 @@ void check_rest(Checker& c, const Model& m) {
     const size_t zones = m.dim == 3 ? m.continuum3.zones.size() : nz;
     c.require(h.zone >= -1 && h.zone < int64_t(zones),
               "history '" + h.label + "' names a zone that does not exist");
-    const size_t elements = is_cable_quantity(h.quantity) ? m.cables.size() : m.support.size();
+    const size_t elements = is_cable_quantity(h.quantity)   ? m.cables.size()
+                            : is_liner_quantity(h.quantity) ? m.liners.size()
+                                                            : m.support.size();
     c.require(h.element >= -1 && h.element < int64_t(elements),
               "history '" + h.label + "' names a bolt element or cable node that does not exist");
   }
@@ -281,6 +283,24 @@ void check_rest(Checker& c, const Model& m) {
       c.require(K.cable[k] == i && anchor_ok(K.host[k]) &&
                     (k + 1 == o.first + o.count || K.rest[k] > 0.0),
                 "cable '" + o.name + "' has a node outside the model or a segment of no length");
+  }
+  // Liners: per-node arrays of one size, nodes inside their liners, hosts in the model.
+  const Liners& L = m.liners;
+  const size_t nl = L.liner.size();
+  for (const auto* v :
+       {&L.length, &L.rot, &L.spin, &L.mass, &L.inertia, &L.shear, &L.pressure, &L.moment_sum,
+        &L.axial, &L.m_start, &L.m_end, &L.v_shear, &L.plastic_axial, &L.hinge_start, &L.hinge_end})
+    c.size(*v, nl, "liner node values");
+  for (const auto* v : {&L.pos0, &L.normal, &L.disp, &L.vel, &L.force, &L.host_force})
+    c.size(*v, nl, "liner node vectors");
+  c.size(L.host, nl, "liner hosts"), c.size(L.state, nl, "liner states");
+  for (size_t i = 0; i < L.liners.size() && c.ok(); ++i) {
+    const Liner& o = L.liners[i];
+    c.require(o.count >= 2 && size_t(o.first) + o.count <= nl,
+              "liner '" + o.name + "' names nodes that do not exist");
+    for (uint32_t k = o.first; k < o.first + o.count && c.ok(); ++k)
+      c.require(L.liner[k] == i && anchor_ok(L.host[k]),
+                "liner '" + o.name + "' has a node outside the model");
   }
   c.require(m.dim == 2 || m.dim == 3, "the dimension is neither 2 nor 3");
   c.require(m.det_x.empty() || m.det_x.size() == m.blocks.size(), "Verlet references differ");

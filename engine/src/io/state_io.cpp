@@ -263,6 +263,17 @@ void fields(IO& io, auto& m) {
   io.vec(K.cable), io.vec(K.host), io.vec(K.bonded), io.vec(K.slip), io.vec(K.slip_plastic);
   io.vec(K.vel), io.vec(K.inertia), io.vec(K.bond), io.vec(K.state), io.vec(K.rest);
   io.vec(K.plastic), io.vec(K.axial), io.vec(K.pos), io.vec(K.axis), io.vec(K.host_force);
+  auto& L = m.liners;
+  count = L.liners.size();
+  io.items(count);
+  L.liners.resize(count);
+  for (auto& l : L.liners)
+    io.str(l.name), io.pod(l.props), io.pod(l.first), io.pod(l.count), io.pod(l.closed);
+  io.vec(L.liner), io.vec(L.host), io.vec(L.pos0), io.vec(L.normal), io.vec(L.disp);
+  io.vec(L.vel), io.vec(L.force), io.vec(L.host_force), io.vec(L.length), io.vec(L.rot);
+  io.vec(L.spin), io.vec(L.mass), io.vec(L.inertia), io.vec(L.shear), io.vec(L.pressure);
+  io.vec(L.moment_sum), io.vec(L.state), io.vec(L.axial), io.vec(L.m_start), io.vec(L.m_end);
+  io.vec(L.v_shear), io.vec(L.plastic_axial), io.vec(L.hinge_start), io.vec(L.hinge_end);
 }
 
 }  // namespace

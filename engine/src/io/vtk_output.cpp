@@ -126,17 +126,20 @@ void write_contacts(const Model& m, const std::string& path) {
 // Bolts as polylines through their crossings: forces, displacements and state at each crossing
 // (zero at the ends), the bolt's number per segment. Then cables through their nodes: the axial
 // force of the segment from each node (zero at the last), the grout's slip and force per metre
-// at each node; `kind` 1 for a bolt's segments, 2 for a cable's, and its number.
+// at each node; then liners through their nodes (a ring closed): axial force (tension positive),
+// thrust, moment and the interface's pressure at each node; `kind` 1 for a bolt's segments, 2
+// for a cable's, 3 for a liner's, and its number.
 void write_support(const Model& m, const std::string& path) {
   const Reinforcement& R = m.support;
   const Cables& K = m.cables;
   std::vector<BoltPoint> pts;
   std::vector<int32_t> seg_bolt, seg_kind;
-  std::vector<size_t> seg_start;
+  std::vector<size_t> seg_start, seg_end;
   for (size_t b = 0; b < R.bolts.size(); ++b) {
     const std::vector<BoltPoint> p = bolt_path(m, b);
     for (size_t k = 0; k + 1 < p.size(); ++k)
-      seg_start.push_back(pts.size() + k), seg_bolt.push_back(static_cast<int32_t>(b + 1));
+      seg_start.push_back(pts.size() + k), seg_end.push_back(pts.size() + k + 1),
+          seg_bolt.push_back(static_cast<int32_t>(b + 1));
     pts.insert(pts.end(), p.begin(), p.end());
   }
   seg_kind.assign(seg_bolt.size(), 1);
@@ -144,15 +147,35 @@ void write_support(const Model& m, const std::string& path) {
   for (size_t c = 0; c < K.cables.size(); ++c) {
     const Cable& cab = K.cables[c];
     for (uint32_t k = 0; k + 1 < cab.count; ++k) {
-      seg_start.push_back(pts.size() + k);
+      seg_start.push_back(pts.size() + k), seg_end.push_back(pts.size() + k + 1);
       seg_bolt.push_back(static_cast<int32_t>(c + 1)), seg_kind.push_back(2);
     }
     for (uint32_t i = cab.first; i < cab.first + cab.count; ++i) pts.push_back({K.pos[i], -1});
   }
+  // Liners after the cables: a closed one's last element back to its first node (kind 3).
+  const size_t first_liner = pts.size();
+  const Liners& L = m.liners;
+  for (size_t l = 0; l < L.liners.size(); ++l) {
+    const Liner& ln = L.liners[l];
+    for (uint32_t k = 0; k < ln.count; ++k) {
+      const int64_t next = L.next(ln.first + k);
+      if (next < 0) continue;
+      seg_start.push_back(pts.size() + k);
+      seg_end.push_back(pts.size() + static_cast<size_t>(next) - ln.first);
+      seg_bolt.push_back(static_cast<int32_t>(l + 1));
+      seg_kind.push_back(3);
+    }
+    for (uint32_t i = ln.first; i < ln.first + ln.count; ++i)
+      pts.push_back({liner_position(L, i), -1});
+  }
+  // A liner node's value, or zero elsewhere.
+  auto at_liner = [&](auto value) {
+    return [&, value](size_t k) { return k >= first_liner ? value(k - first_liner) : 0.0; };
+  };
   // A cable node's value, or zero at a bolt's points.
   auto node = [&](const std::vector<double>& v, bool last_zero) {
     return [&, last_zero](size_t k) {
-      if (k < first_node) return 0.0;
+      if (k < first_node || k >= first_liner) return 0.0;
       const size_t i = k - first_node;
       const bool last = i + 1 == K.size() || K.cable[i + 1] != K.cable[i];
       return last && last_zero ? 0.0 : v[i];
@@ -163,22 +186,29 @@ void write_support(const Model& m, const std::string& path) {
   begin_piece(out, n, ns, "Lines", [&](size_t k) { return pts[k].at; });
   out << "<Lines>\n";
   array(out, "Int64", "connectivity", 1, 2 * ns,
-        [&](size_t k) { return seg_start[k / 2] + k % 2; });
+        [&](size_t k) { return k % 2 ? seg_end[k / 2] : seg_start[k / 2]; });
   array(out, "Int64", "offsets", 1, ns, [](size_t s) { return 2 * (s + 1); });
   out << "</Lines>\n<PointData Scalars=\"axial_force\">\n";
   auto at = [&](const std::vector<double>& v) {
     return [&](size_t k) { return pts[k].element >= 0 ? v[size_t(pts[k].element)] : 0.0; };
   };
   const auto cable_axial = node(K.axial, true);
-  array(out, "Float64", "axial_force", 1, n,
-        [&](size_t k) { return k < first_node ? at(R.axial)(k) : cable_axial(k); });
+  array(out, "Float64", "axial_force", 1, n, [&](size_t k) {
+    return k < first_node    ? at(R.axial)(k)
+           : k < first_liner ? cable_axial(k)
+                             : (L.next(k - first_liner) >= 0 ? L.axial[k - first_liner] : 0.0);
+  });
   array(out, "Float64", "shear_force", 1, n, at(R.shear));
   array(out, "Float64", "axial_displacement", 1, n, at(R.ua));
   array(out, "Float64", "shear_displacement", 1, n, at(R.us));
   array(out, "Float64", "bond_slip", 1, n, node(K.slip, false));
   array(out, "Float64", "bond_force", 1, n, node(K.bond, false));
+  array(out, "Float64", "moment", 1, n, at_liner([&](size_t i) { return liner_moment(L, i); }));
+  array(out, "Float64", "thrust", 1, n, at_liner([&](size_t i) { return liner_thrust(L, i); }));
+  array(out, "Float64", "pressure", 1, n, at_liner([&](size_t i) { return L.pressure[i]; }));
   array(out, "Int32", "state", 1, n, [&](size_t k) {
-    return k >= first_node       ? int{K.state[k - first_node]}
+    return k >= first_liner      ? int{L.state[k - first_liner]}
+           : k >= first_node     ? int{K.state[k - first_node]}
            : pts[k].element >= 0 ? int{R.state[size_t(pts[k].element)]}
                                  : 0;
   });
@@ -387,8 +417,8 @@ void VtkSeries::write(const Model& m) {
       write_zones(m, dir_ + "/zones_" + name);
     }
   }
-  // Bolts likewise, from the first snapshot that has them (empty once they are all gone).
-  if (!m.support.empty() || !m.cables.empty() || support_from_ >= 0) {
+  // Support likewise, from the first snapshot that has some (empty once it is all gone).
+  if (!m.support.empty() || !m.cables.empty() || !m.liners.empty() || support_from_ >= 0) {
     if (support_from_ < 0) support_from_ = static_cast<int>(times_.size());
     std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
     write_support(m, dir_ + "/support_" + name);

@@ -206,3 +206,85 @@ void Interpreter::cmd_cable(Args& a) {
 }
 
 }  // namespace tessera
+
+namespace tessera {
+
+int32_t Interpreter::liner_node(Args& a) {
+  const Liners& L = model_.liners;
+  std::string name, at;
+  if (!take(a, "liner", name)) missing(a, "liner", "a liner history (the liner's name)");
+  const auto it = std::find_if(L.liners.begin(), L.liners.end(),
+                               [&](const Liner& l) { return l.name == name; });
+  if (it == L.liners.end()) fail("no liner is named '" + name + "'");
+  int32_t best = static_cast<int32_t>(it->first);
+  if (take(a, "at", at)) {
+    const Vec2 p = point(at);
+    double d = 1e300;
+    for (uint32_t i = it->first; i < it->first + it->count; ++i)
+      if ((L.pos0[i] - p).norm() < d) d = (L.pos0[i] - p).norm(), best = static_cast<int32_t>(i);
+  }
+  return best;
+}
+
+void Interpreter::cmd_liner(Args& a) {
+  std::string name, joints, v;
+  take(a, "name", name);
+  if (!take(a, "joints", joints)) missing(a, "joints", "a liner (the opening's name)");
+  const auto& tags = model_.joint_tags;
+  const auto it = std::find(tags.begin(), tags.end(), joints);
+  if (it == tags.end()) fail("no joint set, crack or opening is named '" + joints + "'");
+  if (name.empty()) name = joints;
+  for (const Liner& l : model_.liners.liners)
+    if (l.name == name) fail("a liner named '" + name + "' exists already: give another name=");
+  double a0 = -180.0, a1 = 180.0;
+  if (take(a, "angles", v)) {
+    const Vec2 r = point(v);
+    a0 = r.x(), a1 = r.y();
+    if (!(a1 > a0))
+      fail("write angles=FROM,TO with TO above FROM (degrees, anticlockwise from +x)");
+  }
+  LinerProperties p;
+  // The section: ea= and ei= (per metre), or e= and thickness= (plane strain with nu=).
+  double e = 0.0, t = 0.0, nu = 0.0, density = 0.0, row = 1.0;
+  const bool has_ea = take_num(a, "ea", p.ea), has_ei = take_num(a, "ei", p.ei);
+  const bool has_e = take_num(a, "e", e), has_t = take_num(a, "thickness", t);
+  take_num(a, "nu", nu);
+  if (has_e || has_t) {
+    if (!has_e) missing(a, "e", "a liner given by its thickness (Young's modulus, Pa)");
+    if (!has_t) missing(a, "thickness", "a liner given by its modulus (its thickness, m)");
+    if (!(e > 0.0) || !(t > 0.0) || !(nu >= 0.0 && nu < 0.5))
+      fail("a liner's e and thickness must be positive and nu in [0, 0.5)");
+    p.ea = e * t / (1.0 - nu * nu), p.ei = e * t * t * t / (12.0 * (1.0 - nu * nu));
+  } else {
+    if (!has_ea)
+      missing(a, "ea", "a liner (its axial stiffness E A, N per metre; or e= thickness=)");
+    if (!has_ei) missing(a, "ei", "a liner (its bending stiffness E I, N m2 per metre)");
+  }
+  if (!(p.ea > 0.0) || !(p.ei > 0.0)) fail("a liner's ea and ei must be positive");
+  if (!take_num(a, "kn", p.kn))
+    missing(a, "kn", "a liner (the interface's normal stiffness, Pa/m)");
+  if (!take_num(a, "ks", p.ks))
+    missing(a, "ks", "a liner (the interface's shear stiffness, Pa/m; 0: full slip)");
+  take_num(a, "thrust", p.thrust), take_num(a, "moment", p.moment);
+  take_num(a, "tension", p.tension), take_num(a, "cohesion", p.cohesion);
+  take_num(a, "friction", p.friction), take_num(a, "mass", p.mass);
+  if (take_num(a, "density", density)) {
+    if (!has_t) fail("density= needs the liner's thickness=; give mass= (kg per metre) instead");
+    p.mass = density * t;
+  }
+  take_num(a, "rowspacing", row);
+  if (!(p.kn > 0.0) || p.ks < 0.0) fail("a liner's kn must be positive and ks zero or more");
+  if (p.thrust < 0.0 || p.moment < 0.0 || p.tension < 0.0 || p.cohesion < 0.0 || p.friction < 0.0 ||
+      p.mass < 0.0)
+    fail("a liner's capacities, strengths and mass cannot be negative (0: none)");
+  if (!(row > 0.0)) fail("the liner's row spacing must be positive");
+  // Per metre of tunnel: a lining of ribs `row` apart is 1/row of a rib.
+  for (double* x : {&p.ea, &p.ei, &p.thrust, &p.moment, &p.mass}) *x /= row;
+  a.words.clear();
+  done(a);
+  const size_t n = install_liner(model_, name, static_cast<int>(it - tags.begin()), a0, a1, p);
+  log("liner '" + name + "': " + std::to_string(n) + " node(s)" +
+      (model_.liners.liners.back().closed ? ", a closed ring" : ""));
+}
+
+}  // namespace tessera

@@ -93,18 +93,12 @@ size_t install_bolt(Model& m, const std::string& name, Vec2 p0, Vec2 p1,
   return m.support.bolts.size() - 1;
 }
 
-size_t install_pattern(Model& m, int tag, double spacing, double length, double a0, double a1,
-                       const std::function<void(size_t, Vec2, Vec2)>& place) {
+OpeningWall opening_wall(const Model& m, int tag) {
   const Blocks& B = m.blocks;
   std::vector<std::vector<Vec2>> polys(B.size());
   for (size_t b = 0; b < B.size(); ++b) polys[b] = B.world_polygon(b);
-  // The wall: outline edges along the tag with empty space just outside them.
-  struct Edge {
-    Vec2 a, b;
-    double angle = 0.0;
-  };
-  std::vector<Edge> wall;
-  Vec2 centre = Vec2::Zero();
+  // Outline edges along the tag with empty space just outside them.
+  OpeningWall out;
   double total = 0.0;
   for (size_t b = 0; b < B.size(); ++b)
     for (uint32_t v = B.vert_begin[b]; v < B.vert_begin[b + 1]; ++v) {
@@ -113,30 +107,36 @@ size_t install_pattern(Model& m, int tag, double spacing, double length, double 
       const Vec2 p = B.world_vertex[v], q = B.world_vertex[w], mid = 0.5 * (p + q);
       const double l = (q - p).norm();
       if (!(l > 0.0) || block_at(m, polys, mid - 1e-4 * perp(q - p)) >= 0) continue;
-      wall.push_back({p, q});
-      centre += l * mid, total += l;
+      out.edges.push_back({p, q, perp(q - p) / l, static_cast<int>(b)});
+      out.centre += l * mid, total += l;
     }
-  if (wall.empty())
+  if (out.edges.empty())
     throw ModelError(
         "no wall of an excavated opening lies along the joints named: delete the "
-        "opening's blocks before placing a pattern of bolts or cables");
-  centre /= total;
-  // Around the opening by angle, bolts every `spacing` along the wall, normal to it into rock.
-  for (Edge& e : wall) {
-    const Vec2 r = 0.5 * (e.a + e.b) - centre;
+        "opening's blocks before placing support on it");
+  out.centre /= total;
+  // Each edge from its end first met going anticlockwise about the centre; sorted by angle.
+  for (WallEdge& e : out.edges) {
+    if (cross(e.from - out.centre, e.to - e.from) < 0.0) std::swap(e.from, e.to);
+    const Vec2 r = 0.5 * (e.from + e.to) - out.centre;
     e.angle = std::atan2(r.y(), r.x());
   }
-  std::sort(wall.begin(), wall.end(),
-            [](const Edge& x, const Edge& y) { return x.angle < y.angle; });
+  std::sort(out.edges.begin(), out.edges.end(),
+            [](const WallEdge& x, const WallEdge& y) { return x.angle < y.angle; });
+  return out;
+}
+
+size_t install_pattern(Model& m, int tag, double spacing, double length, double a0, double a1,
+                       const std::function<void(size_t, Vec2, Vec2)>& place) {
+  const OpeningWall wall = opening_wall(m, tag);
+  const Vec2 centre = wall.centre;
   size_t placed = 0, tried = 0;
   double s = 0.5 * spacing, along = 0.0;
-  for (const Edge& e : wall) {
-    const double l = (e.b - e.a).norm();
-    // Along the wall anticlockwise about the centre, whichever way the block's outline runs.
-    const bool ccw = cross(e.a - centre, e.b - e.a) > 0.0;
-    const Vec2 from = ccw ? e.a : e.b, to = ccw ? e.b : e.a;
+  // Bolts every `spacing` along the wall, normal to it into rock.
+  for (const WallEdge& e : wall.edges) {
+    const double l = (e.to - e.from).norm();
     for (; s < along + l; s += spacing) {
-      const Vec2 p = from + (s - along) / l * (to - from), in = perp(e.b - e.a) / l;
+      const Vec2 p = e.from + (s - along) / l * (e.to - e.from), in = e.inward;
       const Vec2 r = p - centre;
       double deg = std::atan2(r.y(), r.x()) * 180.0 / M_PI;
       while (deg < a0) deg += 360.0;

@@ -7,6 +7,7 @@
 #include "tessera/core/model.hpp"
 #include "tessera/core/step.hpp"
 #include "tessera/support/cables.hpp"
+#include "tessera/support/liners.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
@@ -178,6 +179,16 @@ void add_reinforcement_forces(Model& m) {
     B.fx[b] += f.x(), B.fy[b] += f.y(), B.moment[b] += cross(r, f);
     B.applied[b] += f.norm();
   }
+  // Liner nodes' push on rigid hosts, in node order.
+  const Liners& L = m.liners;
+  for (size_t i = 0; i < L.size(); ++i) {
+    const Anchor2& a = L.host[i];
+    if (a.node[0] >= 0) continue;
+    const auto b = static_cast<size_t>(a.block);
+    const Vec2 f = L.host_force[i], r = anchor_position(m, a) - Vec2(B.x[b], B.y[b]);
+    B.fx[b] += f.x(), B.fy[b] += f.y(), B.moment[b] += cross(r, f);
+    B.applied[b] += f.norm();
+  }
 }
 
 void add_reinforcement_forces_to_nodes(Model& m) {
@@ -196,6 +207,12 @@ void add_reinforcement_forces_to_nodes(Model& m) {
     for (int k = 0; a.node[0] >= 0 && k < 3; ++k)
       add_node_force(c, static_cast<size_t>(a.node[k]), a.w[k] * K.host_force[i]);
   }
+  const Liners& L = m.liners;
+  for (size_t i = 0; i < L.size(); ++i) {
+    const Anchor2& a = L.host[i];
+    for (int k = 0; a.node[0] >= 0 && k < 3; ++k)
+      add_node_force(c, static_cast<size_t>(a.node[k]), a.w[k] * L.host_force[i]);
+  }
 }
 
 std::vector<double> reinforcement_stiffness(const Model& m) {
@@ -209,6 +226,8 @@ std::vector<double> reinforcement_stiffness(const Model& m) {
   const Cables& K = m.cables;
   for (size_t i = 0; i < K.size(); ++i)
     k[static_cast<size_t>(K.host[i].block)] += cable_host_stiffness(m, i);
+  for (size_t i = 0; i < m.liners.size(); ++i)
+    k[static_cast<size_t>(m.liners.host[i].block)] += liner_host_stiffness(m, i);
   return k;
 }
 

@@ -57,7 +57,7 @@ void ordered_outline(const ZoneMesh& mesh, const std::vector<Vec2>& poly,
 void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading) {
   Blocks& B = m.blocks;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
-  if (!m.support.empty() || !m.cables.empty())
+  if (!m.support.empty() || !m.cables.empty() || !m.liners.empty())
     throw std::invalid_argument(
         "bolts or cables are placed already: zone blocks before placing support");
   const int mat = B.material[b];
@@ -300,10 +300,12 @@ std::vector<double> node_timesteps2(const Model& m) {
         if (c.mass[n] > 0 && kn > 0) dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / kn));
       }
   }
-  // Cable nodes hosted in zones: the same with their grout (or a tied head's segment).
-  for (size_t i = 0; i < m.cables.size(); ++i) {
-    const Anchor2& a = m.cables.host[i];
-    const double kc = cable_host_stiffness(m, i);
+  // Cable and liner nodes hosted in zones: the same with their grout (or a tied head's
+  // segment) and interface.
+  const size_t nc = m.cables.size();
+  for (size_t i = 0; i < nc + m.liners.size(); ++i) {
+    const Anchor2& a = i < nc ? m.cables.host[i] : m.liners.host[i - nc];
+    const double kc = i < nc ? cable_host_stiffness(m, i) : liner_host_stiffness(m, i - nc);
     for (int k = 0; a.node[0] >= 0 && k < 3; ++k) {
       const auto n = static_cast<size_t>(a.node[k]);
       if (c.mass[n] > 0 && a.w[k] * kc > 0)

@@ -38,7 +38,11 @@ enum class HistoryQuantity : uint8_t {
   kBoltAxial,
   kBoltShear,  // at one crossing of a bolt (axial: tension positive)
   kCableAxial,
-  kCableSlip  // at one node of a cable (its segment's force, tension positive; grout slip)
+  kCableSlip,  // at one node of a cable (its segment's force, tension positive; grout slip)
+  kLinerThrust,
+  kLinerMoment,
+  kLinerPressure  // at one node of a liner (its elements' thrust, compression positive, and
+                  // moment at the node; the interface's pressure on the rock)
 };
 
 struct HistorySeries {
@@ -73,6 +77,8 @@ bool is_zone_quantity(HistoryQuantity q);
 bool is_bolt_quantity(HistoryQuantity q);
 // Whether a quantity is a cable's (sampled at one node, picked by cable and point).
 bool is_cable_quantity(HistoryQuantity q);
+// Whether a quantity is a liner's (sampled at one node, picked by liner and point).
+bool is_liner_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.
 std::vector<std::string> history_quantity_names();
 // Current value of one series.

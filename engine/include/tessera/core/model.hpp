@@ -18,6 +18,7 @@
 #include "tessera/core/joint_law.hpp"
 #include "tessera/core/run_options.hpp"
 #include "tessera/support/cables.hpp"
+#include "tessera/support/liners.hpp"
 #include "tessera/support/reinforcement.hpp"
 #include "tessera/zones/continuum.hpp"
 
@@ -81,8 +82,9 @@ struct Model {
   Continuum3 continuum3;
   // Rock support: bolts across joints (2D).
   Reinforcement support;
-  // Grouted cables (2D).
+  // Grouted cables and liners (2D).
   Cables cables;
+  Liners liners;
 
   // Clock.
   uint64_t cycle = 0;

@@ -180,6 +180,9 @@ class Interpreter {
   };
   Pattern pattern_args(Args& a, const std::string& what);
   void cmd_cable(Args&);
+  void cmd_liner(Args&);
+  // The liner node a history names: liner=NAME [at=X,Y] (the node nearest the point).
+  int32_t liner_node(Args& a);
   CableProperties cable_properties(Args& a);
   // The cable node a history names: cable=NAME [at=X,Y] (the node nearest the point).
   int32_t cable_node(Args& a);

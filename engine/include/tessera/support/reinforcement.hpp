@@ -104,6 +104,21 @@ size_t install_bolt(Model& m, const std::string& name, Vec2 p0, Vec2 p1,
 // The block whose outline (world polygons `polys`) holds p, or -1.
 int block_at(const Model& m, const std::vector<std::vector<Vec2>>& polys, Vec2 p);
 
+// The wall of an excavated opening: the outline edges along joint tag `tag` that face empty
+// space, each from its end first met going anticlockwise about the wall's centre, with its
+// unit normal into the rock and its block, sorted by angle about the centre (-pi to pi).
+// Throws ModelError if there is none.
+struct WallEdge {
+  Vec2 from, to, inward;
+  int block = -1;
+  double angle = 0.0;
+};
+struct OpeningWall {
+  std::vector<WallEdge> edges;
+  Vec2 centre = Vec2::Zero();
+};
+OpeningWall opening_wall(const Model& m, int tag);
+
 // Places bolts (or cables) of length L every `spacing` along the wall of an excavated opening:
 // calls place(k, p0, p1) for the k-th (from 1) with p0 on the wall and p1 in the rock; a place
 // that throws ModelError is skipped. Returns how many were placed (see install_bolt_pattern).

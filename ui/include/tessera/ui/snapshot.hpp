@@ -65,6 +65,7 @@ struct SnapshotZone {
 struct SnapshotBolt {
   std::string name;
   bool cable = false;
+  bool liner = false;  // a liner, drawn as a cable is (its axial force: tension positive)
   std::vector<Vec2> points;
   std::vector<int> block;
   std::vector<double> axial, shear;
