@@ -65,6 +65,19 @@ QString write_file(QTemporaryDir& dir, const QString& name, const std::string& t
 }
 
 // A figure a script wrote: the size asked for, and a drawing, not a blank page.
+// Support drawn purple (elastic) in the plot, left of 2/5 of the width and right of it (to the
+// legend, at 3/4): the twin tunnels' left and right.
+std::pair<long, long> purple_left_right(const QImage& img) {
+  long left = 0, right = 0;
+  for (int py = 0; py < img.height(); ++py)
+    for (int px = 0; px < img.width() * 3 / 4; ++px) {
+      const QColor c = img.pixelColor(px, py);
+      if (c.red() > 140 && c.green() < 40 && c.blue() > 140)
+        ++(px < img.width() * 2 / 5 ? left : right);
+    }
+  return {left, right};
+}
+
 void check_figure(const QString& path, QSize size) {
   QVERIFY2(QFile::exists(path), qPrintable(path));
   QImage img;
@@ -400,13 +413,7 @@ class TestExamples : public QObject {
     check_figure(r.dir + "/tunnel_bolted.png", QSize(1600, 900));
     // The bolts are drawn (purple while elastic) over the right tunnel's roof, and only there.
     const QImage img(r.dir + "/tunnel_bolted.png");
-    long left = 0, right = 0;
-    for (int py = 0; py < img.height(); ++py)
-      for (int px = 0; px < img.width() * 3 / 4; ++px) {
-        const QColor c = img.pixelColor(px, py);
-        if (c.red() > 140 && c.green() < 40 && c.blue() > 140)
-          ++(px < img.width() * 2 / 5 ? left : right);
-      }
+    const auto [left, right] = purple_left_right(img);
     qInfo("bolt pixels: %ld over the left tunnel, %ld over the right", left, right);
     QVERIFY(right > 500);
     QCOMPARE(left, 0L);
@@ -428,13 +435,7 @@ class TestExamples : public QObject {
     QVERIFY2(check_vtp(r.dir + "/vtk/support_0000.vtp", why) > 0, qPrintable(why));
     check_figure(r.dir + "/tunnel_cabled.png", QSize(1600, 900));
     const QImage img(r.dir + "/tunnel_cabled.png");
-    long left = 0, right = 0;
-    for (int py = 0; py < img.height(); ++py)
-      for (int px = 0; px < img.width() * 3 / 4; ++px) {
-        const QColor c = img.pixelColor(px, py);
-        if (c.red() > 140 && c.green() < 40 && c.blue() > 140)
-          ++(px < img.width() * 2 / 5 ? left : right);
-      }
+    const auto [left, right] = purple_left_right(img);
     qInfo("cable pixels: %ld over the left tunnel, %ld over the right", left, right);
     QVERIFY(right > 2000);
     QCOMPARE(left, 0L);

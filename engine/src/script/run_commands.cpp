@@ -308,19 +308,11 @@ void Interpreter::cmd_history(Args& a) {
     s.zone = model_.dim == 3 ? nearest_zone(model_.continuum3, point3(at))
                              : nearest_zone(model_.continuum, point(at));
     if (s.zone < 0) fail("there are no zones: 'zone generate' makes blocks deformable");
-  } else if (is_liner_quantity(s.quantity)) {
-    s.element = liner_node(a);
-    s.label += "_" + model_.liners.liners[model_.liners.liner[static_cast<size_t>(s.element)]].name;
-    take(a, "label", s.label);
-    a.words.clear();
-  } else if (is_cable_quantity(s.quantity)) {
-    s.element = cable_node(a);
-    s.label += "_" + model_.cables.cables[model_.cables.cable[static_cast<size_t>(s.element)]].name;
-    take(a, "label", s.label);
-    a.words.clear();
-  } else if (is_bolt_quantity(s.quantity)) {
-    s.element = bolt_element(a);
-    s.label += "_" + model_.support.bolts[model_.support.bolt[static_cast<size_t>(s.element)]].name;
+  } else if (is_bolt_quantity(s.quantity) || is_cable_quantity(s.quantity) ||
+             is_liner_quantity(s.quantity)) {
+    std::string name;
+    s.element = support_point(a, s.quantity, name);
+    s.label += "_" + name;
     take(a, "label", s.label);
     a.words.clear();
   } else {

@@ -1,6 +1,7 @@
 // Script commands of rock support: `bolt` and `cable` (one, or a pattern around an opening).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "tessera/generation/generators.hpp"
 #include "tessera/script/script.hpp"
@@ -48,27 +49,6 @@ Interpreter::Pattern Interpreter::pattern_args(Args& a, const std::string& what)
   if (!(p.a1 > p.a0))
     fail("write angles=FROM,TO with TO above FROM (degrees, anticlockwise from +x)");
   return p;
-}
-
-int32_t Interpreter::bolt_element(Args& a) {
-  const Reinforcement& R = model_.support;
-  std::string name, at;
-  if (!take(a, "bolt", name)) missing(a, "bolt", "a bolt history (the bolt's name)");
-  const auto it =
-      std::find_if(R.bolts.begin(), R.bolts.end(), [&](const Bolt& b) { return b.name == name; });
-  if (it == R.bolts.end()) fail("no bolt is named '" + name + "'");
-  // The crossing nearest the point, or the bolt's first.
-  int32_t best = static_cast<int32_t>(it->first);
-  if (take(a, "at", at)) {
-    const Vec2 p = point(at);
-    double d = 1e300;
-    for (uint32_t e = it->first; e < it->first + it->count; ++e) {
-      const Vec2 x =
-          0.5 * (anchor_position(model_, R.side_a[e]) + anchor_position(model_, R.side_b[e]));
-      if ((x - p).norm() < d) d = (x - p).norm(), best = static_cast<int32_t>(e);
-    }
-  }
-  return best;
 }
 
 void Interpreter::cmd_bolt(Args& a) {
@@ -133,24 +113,6 @@ CableProperties Interpreter::cable_properties(Args& a) {
   return p;
 }
 
-int32_t Interpreter::cable_node(Args& a) {
-  const Cables& K = model_.cables;
-  std::string name, at;
-  if (!take(a, "cable", name)) missing(a, "cable", "a cable history (the cable's name)");
-  const auto it = std::find_if(K.cables.begin(), K.cables.end(),
-                               [&](const Cable& c) { return c.name == name; });
-  if (it == K.cables.end()) fail("no cable is named '" + name + "'");
-  // The node nearest the point, or the cable's first.
-  int32_t best = static_cast<int32_t>(it->first);
-  if (take(a, "at", at)) {
-    const Vec2 p = point(at);
-    double d = 1e300;
-    for (uint32_t i = it->first; i < it->first + it->count; ++i)
-      if ((K.pos[i] - p).norm() < d) d = (K.pos[i] - p).norm(), best = static_cast<int32_t>(i);
-  }
-  return best;
-}
-
 void Interpreter::cmd_cable(Args& a) {
   std::string name;
   take(a, "name", name);
@@ -205,26 +167,6 @@ void Interpreter::cmd_cable(Args& a) {
   log("cable '" + name + "': " + std::to_string(n) + " segment(s)");
 }
 
-}  // namespace tessera
-
-namespace tessera {
-
-int32_t Interpreter::liner_node(Args& a) {
-  const Liners& L = model_.liners;
-  std::string name, at;
-  if (!take(a, "liner", name)) missing(a, "liner", "a liner history (the liner's name)");
-  const auto it = std::find_if(L.liners.begin(), L.liners.end(),
-                               [&](const Liner& l) { return l.name == name; });
-  if (it == L.liners.end()) fail("no liner is named '" + name + "'");
-  int32_t best = static_cast<int32_t>(it->first);
-  if (take(a, "at", at)) {
-    const Vec2 p = point(at);
-    double d = 1e300;
-    for (uint32_t i = it->first; i < it->first + it->count; ++i)
-      if ((L.pos0[i] - p).norm() < d) d = (L.pos0[i] - p).norm(), best = static_cast<int32_t>(i);
-  }
-  return best;
-}
 
 void Interpreter::cmd_liner(Args& a) {
   std::string name, joints, v;
@@ -285,6 +227,52 @@ void Interpreter::cmd_liner(Args& a) {
   const size_t n = install_liner(model_, name, static_cast<int>(it - tags.begin()), a0, a1, p);
   log("liner '" + name + "': " + std::to_string(n) + " node(s)" +
       (model_.liners.liners.back().closed ? ", a closed ring" : ""));
+}
+
+
+int32_t Interpreter::support_point(Args& a, HistoryQuantity q, std::string& name) {
+  // The members of the kind the quantity is of: names, ranges, and where each point is.
+  struct Member {
+    std::string name;
+    uint32_t first = 0, count = 0;
+  };
+  std::vector<Member> members;
+  std::function<Vec2(uint32_t)> at_point;
+  const char* kind = "bolt";
+  const Reinforcement& R = model_.support;
+  const Cables& K = model_.cables;
+  const Liners& L = model_.liners;
+  if (is_bolt_quantity(q)) {
+    for (const Bolt& b : R.bolts) members.push_back({b.name, b.first, b.count});
+    at_point = [&](uint32_t e) {
+      return Vec2(0.5 *
+                  (anchor_position(model_, R.side_a[e]) + anchor_position(model_, R.side_b[e])));
+    };
+  } else if (is_cable_quantity(q)) {
+    kind = "cable";
+    for (const Cable& c : K.cables) members.push_back({c.name, c.first, c.count});
+    at_point = [&](uint32_t i) { return K.pos[i]; };
+  } else {
+    kind = "liner";
+    for (const Liner& l : L.liners) members.push_back({l.name, l.first, l.count});
+    at_point = [&](uint32_t i) { return L.pos0[i]; };
+  }
+  std::string at;
+  if (!take(a, kind, name))
+    missing(a, kind, std::string("a ") + kind + " history (the " + kind + "'s name)");
+  const auto it =
+      std::find_if(members.begin(), members.end(), [&](const Member& o) { return o.name == name; });
+  if (it == members.end()) fail(std::string("no ") + kind + " is named '" + name + "'");
+  // The point nearest at=, or the member's first.
+  int32_t best = static_cast<int32_t>(it->first);
+  if (take(a, "at", at)) {
+    const Vec2 p = point(at);
+    double d = 1e300;
+    for (uint32_t i = it->first; i < it->first + it->count; ++i)
+      if ((at_point(i) - p).norm() < d)
+        d = (at_point(i) - p).norm(), best = static_cast<int32_t>(i);
+  }
+  return best;
 }
 
 }  // namespace tessera

@@ -170,8 +170,9 @@ class Interpreter {
   // Rock support (support_commands.cpp).
   void cmd_bolt(Args&);
   BoltProperties bolt_properties(Args& a);
-  // The bolt element a history names: bolt=NAME [at=X,Y] (the crossing nearest the point).
-  int32_t bolt_element(Args& a);
+  // The support point a history of quantity q names: bolt=, cable= or liner=NAME [at=X,Y], the
+  // crossing or node nearest the point (the first without at=); sets `name` to the member's.
+  int32_t support_point(Args& a, HistoryQuantity q, std::string& name);
   // 'bolt pattern' and 'cable pattern': joints=OPENING spacing=S length=L [angles=A0,A1].
   struct Pattern {
     std::string joints;
@@ -181,11 +182,7 @@ class Interpreter {
   Pattern pattern_args(Args& a, const std::string& what);
   void cmd_cable(Args&);
   void cmd_liner(Args&);
-  // The liner node a history names: liner=NAME [at=X,Y] (the node nearest the point).
-  int32_t liner_node(Args& a);
   CableProperties cable_properties(Args& a);
-  // The cable node a history names: cable=NAME [at=X,Y] (the node nearest the point).
-  int32_t cable_node(Args& a);
   // Deformable blocks (zone_commands.cpp).
   void cmd_zone(Args&);
   void cmd_boundary(Args&);
