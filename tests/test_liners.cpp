@@ -146,5 +146,10 @@ class TestLiners : public QObject {
   }
 };
 
-QTEST_GUILESS_MAIN(TestLiners)
+int main(int argc, char** argv) {
+  QCoreApplication app(argc, argv);
+  TestLiners t;
+  return tessera::test::run_tests(t, argc, argv);
+}
+
 #include "test_liners.moc"
