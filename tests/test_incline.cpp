@@ -58,6 +58,27 @@ class TestIncline : public QObject {
     QVERIFY(std::abs(along() - start) < 1e-6);
     QVERIFY(std::hypot(m.blocks.vx[1], m.blocks.vy[1]) < 1e-4);
   }
+  // What a script reads of the model: `slipping` counts the contacts at their shear strength
+  // (both corners of the sliding block; none while friction holds it, the same in the
+  // `slipping` history), and blockat() numbers the block holding a point.
+  void slippingAndBlockAtReadTheModel() {
+    for (const auto& [phi, expected] : {std::pair{20.0, 2.0}, std::pair{40.0, 0.0}}) {
+      ScriptRun r;
+      r.run(incline(30, phi) + "history slipping\n" +
+            (expected > 0 ? "step 300\n" : "damping local 0.8\nsolve ratio=1e-7\n") +
+            "set n = slipping\n"
+            "set top = blockat(0.5*c-0.5*s, 0.5*s+0.5*c)\nset base = blockat(0, -0.5)");
+      qInfo("friction %g: %g contacts slipping", phi, r.interp->variable("n"));
+      QCOMPARE(r.interp->variable("n"), expected);
+      QCOMPARE(r.model().histories.values.back(), expected);
+      QCOMPARE(r.interp->variable("top"), 2.0);
+      QCOMPARE(r.interp->variable("base"), 1.0);
+    }
+    ScriptRun r;
+    r.run(incline(30, 40));
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("set k = blockat(50, 50)"));
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("set k = blockat(0)"));
+  }
   // A cohesive joint with no tensile strength keeps its bond from the first cycle (a block set
   // exactly on another has a round-off gap, which is not tension), and its cohesion holds the
   // block until W sin(psi) = c L. Friction zero: the two base contacts then share the shear

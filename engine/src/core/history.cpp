@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 31> kNames{{
+constexpr std::array<QuantityName, 32> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -117,6 +117,7 @@ constexpr std::array<QuantityName, 31> kNames{{
     {HistoryQuantity::kLinerThrust, "liner_thrust", false},
     {HistoryQuantity::kLinerMoment, "liner_moment", false},
     {HistoryQuantity::kLinerPressure, "liner_pressure", false},
+    {HistoryQuantity::kSlipping, "slipping", false},
 }};
 
 // A zone's stress component or principal stress (2D: in the plane, as the pictures show).
@@ -204,6 +205,7 @@ std::string history_quantity_unit(HistoryQuantity q, int dim) {
     case HistoryQuantity::kAngVel:
       return "rad/s";
     case HistoryQuantity::kRatio:
+    case HistoryQuantity::kSlipping:
       return "";
     case HistoryQuantity::kUnbalanced:
       return dim == 3 ? "N" : "N/m";
@@ -330,10 +332,21 @@ double history_value(const Model& m, const HistorySeries& s) {
       return m.time;
     case HistoryQuantity::kTimestep:
       return m.dt;
+    case HistoryQuantity::kSlipping:
+      return static_cast<double>(slipping_contacts(m));
     default:
       break;
   }
   return 0.0;
+}
+
+size_t slipping_contacts(const Model& m) {
+  size_t n = 0;
+  auto slipping = [](uint8_t f) { return (f & kTouching) && (f & kSlipping); };
+  for (const uint8_t f : m.contacts.flags) n += slipping(f);
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& s : c.subs) n += slipping(s.flags);
+  return n;
 }
 
 void sample_histories(Model& m, bool force) {

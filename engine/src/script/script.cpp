@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "tessera/core/history.hpp"
 #include "tessera/generation/cutting.hpp"
 #include "tessera/script/expr.hpp"
 
@@ -197,9 +198,19 @@ double Interpreter::num(const std::string& text) const {
     if (name == "time") return v = model_.time, true;
     if (name == "ratio") return v = model_.ratio, true;
     if (name == "timestep") return v = model_.dt, true;
+    if (name == "slipping") return v = static_cast<double>(slipping_contacts(model_)), true;
     return false;
   };
   ctx.function = [this](const std::string& f, const std::vector<double>& args, double& v) {
+    // blockat(x,y[,z]): the number of the block holding the point.
+    if (f == "blockat") {
+      if (args.size() != static_cast<size_t>(model_.dim))
+        throw ExprError(model_.dim == 3 ? "write blockat(x,y,z)" : "write blockat(x,y)");
+      std::ostringstream at;
+      at.precision(17);
+      for (size_t k = 0; k < args.size(); ++k) at << (k ? "," : "") << args[k];
+      return v = static_cast<double>(block_at(at.str()) + 1), true;
+    }
     HistoryQuantity q;
     bool per_block = false;
     if (!parse_history_quantity(f, q, per_block) || !per_block || args.size() != 1) return false;
@@ -272,6 +283,45 @@ void Interpreter::done(Args& a) const {
     }
 }
 
+// The block holding a point (X,Y or X,Y,Z), or else the one whose surface is nearest within
+// the contact tolerance (a point on a face or edge, as on the top of a column).
+size_t Interpreter::block_at(const std::string& v) const {
+  if (model_.dim == 3) {
+    const Blocks3& B3 = model_.blocks3;
+    const Vec3 p = point3(v);
+    // (The search ends at a block holding it; a model without a tolerance takes only those.)
+    size_t best = B3.size();
+    double nearest = std::max(model_.tolerance(), 0.0);
+    for (size_t b = 0; b < B3.size() && (best == B3.size() || nearest > 0.0); ++b) {
+      double outside = -1e300;
+      for (uint32_t f = B3.face_begin[b]; f < B3.face_begin[b + 1]; ++f)
+        outside = std::max(outside, B3.world_normal[f].dot(p) - B3.world_offset[f]);
+      if (B3.contains(b, p)) outside = 0.0;
+      if (outside <= nearest) nearest = outside, best = b;
+    }
+    if (best == B3.size())
+      fail("no block contains the point " + v + " or has its surface within the tolerance");
+    return best;
+  }
+  const Blocks& B = model_.blocks;
+  const Vec2 p = point(v);
+  size_t best = B.size();
+  double nearest = std::max(model_.tolerance(), 0.0);
+  for (size_t b = 0; b < B.size() && (best == B.size() || nearest > 0.0); ++b) {
+    const std::vector<Vec2> poly = B.world_polygon(b);
+    if (point_in_polygon(p, poly)) {
+      best = b, nearest = 0.0;
+      break;
+    }
+    for (size_t k = 0; k < poly.size(); ++k)
+      if (const double d = segment_distance(p, poly[k], poly[(k + 1) % poly.size()]); d <= nearest)
+        nearest = d, best = b;
+  }
+  if (best == B.size())
+    fail("no block contains the point " + v + " or has its outline within the tolerance");
+  return best;
+}
+
 std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   const Blocks& B = model_.blocks;
   std::string v;
@@ -309,45 +359,8 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
     }
     any = true;
   }
-  if (three && take(a, "at", v)) {
-    const Vec3 p = point3(v);
-    // The block holding the point, or else the one whose surface is nearest within the contact
-    // tolerance (a point on a face, as on the top of a column).
-    // (The search ends at a block holding it; a model without a tolerance takes only those.)
-    size_t best = B3.size();
-    double nearest = std::max(model_.tolerance(), 0.0);
-    for (size_t b = 0; b < B3.size() && (best == B3.size() || nearest > 0.0); ++b) {
-      double outside = -1e300;
-      for (uint32_t f = B3.face_begin[b]; f < B3.face_begin[b + 1]; ++f)
-        outside = std::max(outside, B3.world_normal[f].dot(p) - B3.world_offset[f]);
-      if (B3.contains(b, p)) outside = 0.0;
-      if (outside <= nearest) nearest = outside, best = b;
-    }
-    if (best == B3.size())
-      fail("no block contains the point " + v + " or has its surface within the tolerance");
-    ids.push_back(best);
-    any = true;
-  }
-  if (!three && take(a, "at", v)) {
-    const Vec2 p = point(v);
-    // The block holding the point, or else the one whose outline is nearest within the contact
-    // tolerance (a point on an edge, as on the top of a column).
-    size_t best = B.size();
-    double nearest = std::max(model_.tolerance(), 0.0);
-    for (size_t b = 0; b < B.size() && (best == B.size() || nearest > 0.0); ++b) {
-      const std::vector<Vec2> poly = B.world_polygon(b);
-      if (point_in_polygon(p, poly)) {
-        best = b, nearest = 0.0;
-        break;
-      }
-      for (size_t k = 0; k < poly.size(); ++k)
-        if (const double d = segment_distance(p, poly[k], poly[(k + 1) % poly.size()]);
-            d <= nearest)
-          nearest = d, best = b;
-    }
-    if (best == B.size())
-      fail("no block contains the point " + v + " or has its outline within the tolerance");
-    ids.push_back(best);
+  if (take(a, "at", v)) {
+    ids.push_back(block_at(v));
     any = true;
   }
   // Centroid inside a circle X,Y,R, or a point inside the block inside a polygon (X,Y X,Y ...).

@@ -41,8 +41,9 @@ enum class HistoryQuantity : uint8_t {
   kCableSlip,  // at one node of a cable (its segment's force, tension positive; grout slip)
   kLinerThrust,
   kLinerMoment,
-  kLinerPressure  // at one node of a liner (its elements' thrust, compression positive, and
-                  // moment at the node; the interface's pressure on the rock)
+  kLinerPressure,  // at one node of a liner (its elements' thrust, compression positive, and
+                   // moment at the node; the interface's pressure on the rock)
+  kSlipping        // of the model: contacts (3D: sub-contacts) slipping this cycle
 };
 
 struct HistorySeries {
@@ -65,6 +66,9 @@ struct Histories {
   // Column index of a label, or -1.
   int find(const std::string& label) const;
 };
+
+// Contacts (3D: sub-contacts) at their shear strength this cycle.
+size_t slipping_contacts(const Model& m);
 
 // Quantity by script keyword, true if known; `block_quantity` says whether it needs a block.
 bool parse_history_quantity(const std::string& word, HistoryQuantity& q, bool& block_quantity);

@@ -249,6 +249,8 @@ class Interpreter {
   // Fails saying `what` needs `key=`, naming a mistyped key if there is one.
   [[noreturn]] void missing(const Args& a, const std::string& key, const std::string& what) const;
   std::vector<size_t> select(Args& a, bool allow_words = false);
+  // The block holding the point X,Y (X,Y,Z), or the nearest within the contact tolerance.
+  size_t block_at(const std::string& text) const;
   std::string resolve(const std::string& path, bool for_reading) const;
   void run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what);
   void check_ready();
