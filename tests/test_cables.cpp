@@ -1,6 +1,7 @@
 // Grouted cables: a cable pulled from rock against the closed-form pull-out solution (elastic
-// grout, partly slipping grout, pull-out capacity), pretension through a faceplate, and the
-// cable kept through deletion, state files and bad input.
+// grout, partly slipping grout, pull-out capacity) in 2D and 3D models (one mechanism, hosts of
+// either dimension), pretension through a faceplate, and the cable kept through deletion, state
+// files and bad input.
 #include <QtTest>
 #include <cmath>
 
@@ -27,8 +28,101 @@ std::string pulled(const std::string& load, const std::string& extra = "") {
          "cable 0.4,0 4.5,0 segments=41 ea=1e8 kbond=1e8 sbond=2e4 head=on name=c" +
          extra + "\n" + load + "\n";
 }
+// The same in 3D: a rock box 2 m square in section, a plate 1 m square and 0.4 m thick (1,000
+// kg), the cable along the x axis through both. (3D cable properties are per cable.)
+std::string pulled3(const std::string& load) {
+  return "dimension 3\ntolerance 0.01\n"
+         "material define rock density=2500\n"
+         "joint define j kn=1e10 ks=1e10 friction=30\n"
+         "joint assign j\n"
+         "block box 0.5,-1,-1 4.5,1,1 material=rock group=rock\n"
+         "block box 0,-0.5,-0.5 0.4,0.5,0.5 material=rock group=plate\n"
+         "fix group=rock\n"
+         "cable 0.4,0,0 4.5,0,0 segments=41 ea=1e8 kbond=1e8 sbond=2e4 head=on name=c\n" +
+         load + "\n";
+}
+// A pull-out run in 2D or 3D: the load in 2D words (gravity GX 0, vx=), written for the
+// dimension; the cable's nodes and the plate's displacement along -x.
+struct PullOut {
+  ScriptRun r;
+  int dim = 2;
+  PullOut(int d, std::string load) : dim(d) {
+    if (dim == 3)
+      for (size_t at = load.find("gravity -10 0"); at != std::string::npos;
+           at = load.find("gravity -10 0", at + 1))
+        load.replace(at, 13, "gravity -10 0 0");
+    r.run(dim == 3 ? pulled3(load) : pulled(load));
+  }
+  // The node arrays, whichever the dimension (the same fields in both).
+  template <class F>
+  void with_cables(F f) {
+    if (dim == 3)
+      f(r.model().cables3);
+    else
+      f(r.model().cables);
+  }
+  double plate_moved() {
+    const Model& m = r.model();
+    return dim == 3 ? m.blocks3.ref[1].x() - m.blocks3.body[1].position.x()
+                    : m.blocks.x_ref[1] - m.blocks.x[1];
+  }
+};
+void dimensions() {
+  QTest::addColumn<int>("dim");
+  QTest::newRow("2D") << 2;
+  QTest::newRow("3D") << 3;
+}
 // The rock's cable nodes: the first at the rock face (x = 0.5), after the head and the gap.
 constexpr uint32_t kFace = 1;
+
+// The checks of each pull-out against its closed form, on the node arrays of either dimension.
+template <class K_>
+void check_elastic(const K_& K, double moved) {
+  const double P = 1000.0 * 10.0, alpha = std::sqrt(kBond / kEA);
+  qInfo("force across the gap %.6g N (load %.6g)", K.axial[0], P);
+  QVERIFY(std::abs(K.axial[0] - P) < 1e-6 * P);
+  const double slip = P / (kEA * alpha * std::tanh(alpha * kL));
+  qInfo("slip at the rock face %.6g m (closed form %.6g)", K.slip[kFace], slip);
+  QVERIFY(std::abs(K.slip[kFace] - slip) < 2e-3 * slip);
+  double worst = 0.0;
+  for (uint32_t i = kFace; i + 1 < K.size(); ++i) {
+    // A segment's force at its middle.
+    const double x = (i - kFace + 0.5) * 0.1;
+    const double n = P * std::sinh(alpha * (kL - x)) / std::sinh(alpha * kL);
+    worst = std::max(worst, std::abs(K.axial[i] - n) / P);
+  }
+  qInfo("largest error in the axial force along the cable: %.3g of the load", worst);
+  QVERIFY(worst < 3e-3);
+  // The plate moves by the slip and the stretch of the free length across the gap.
+  QVERIFY(std::abs(moved - (slip + P * kGap / kEA)) < 2e-3 * moved);
+}
+template <class K_>
+void check_slipping(const K_& K) {
+  const double P = K.axial[0], s = 2e4, alpha = 1.0;
+  QVERIFY(P > 4e4 && P < 7e4);  // well into slip, short of the capacity 8e4
+  double lo = 0.0, hi = kL;     // bisection for a
+  for (int k = 0; k < 100; ++k) {
+    const double a = 0.5 * (lo + hi);
+    (s * a + s / alpha * std::tanh(alpha * (kL - a)) < P ? lo : hi) = a;
+  }
+  const double a = 0.5 * (lo + hi);
+  const double slip = s / kBond + (P * a - 0.5 * s * a * a) / kEA;
+  int yielding = 0;
+  for (uint32_t i = kFace; i < K.size(); ++i) yielding += K.slip_plastic[i] != 0.0;
+  qInfo(
+      "pulled with %.6g N: slipping length %.4g m (closed form %.4g), slip at the face %.6g m "
+      "(closed form %.6g)",
+      P, 0.1 * (yielding - 0.5), a, K.slip[kFace], slip);
+  QVERIFY(std::abs(K.slip[kFace] - slip) < 5e-3 * slip);
+  QVERIFY(std::abs(0.1 * (yielding - 0.5) - a) <= 0.1);
+  QVERIFY(std::abs(K.bond[kFace] - s) < 1e-3 * s);
+}
+template <class K_>
+void check_capacity(const K_& K) {
+  qInfo("force at pull-out %.6g N (closed form %.6g)", K.axial[0], 2e4 * kL);
+  QVERIFY(std::abs(K.axial[0] - 2e4 * kL) < 1e-3 * 2e4 * kL);
+  for (uint32_t i = kFace; i < K.size(); ++i) QVERIFY(K.state[i] & kCableBondYield);
+}
 }  // namespace
 
 class TestCables : public QObject {
@@ -37,71 +131,69 @@ class TestCables : public QObject {
   // Elastic grout (shear lag): N(x) = P sinh(alpha (L - x)) / sinh(alpha L) along the rock, and
   // the cable enters the rock with the slip P / (EA alpha tanh(alpha L)). The cable's segments
   // and grout springs every h = 0.1 m approximate it to about (alpha h)^2 / 12 = 0.1%.
+  void elasticPullOut_data() { dimensions(); }
   void elasticPullOut() {
-    ScriptRun r;
-    r.run(pulled("gravity -10 0\nsolve ratio=1e-9"));
-    const Cables& K = r.model().cables;
-    const double P = 1000.0 * 10.0, alpha = std::sqrt(kBond / kEA);
-    qInfo("force across the gap %.6g N (load %.6g)", K.axial[0], P);
-    QVERIFY(std::abs(K.axial[0] - P) < 1e-6 * P);
-    const double slip = P / (kEA * alpha * std::tanh(alpha * kL));
-    qInfo("slip at the rock face %.6g m (closed form %.6g)", K.slip[kFace], slip);
-    QVERIFY(std::abs(K.slip[kFace] - slip) < 2e-3 * slip);
-    double worst = 0.0;
-    for (uint32_t i = kFace; i + 1 < K.size(); ++i) {
-      // A segment's force at its middle.
-      const double x = (i - kFace + 0.5) * 0.1;
-      const double n = P * std::sinh(alpha * (kL - x)) / std::sinh(alpha * kL);
-      worst = std::max(worst, std::abs(K.axial[i] - n) / P);
-    }
-    qInfo("largest error in the axial force along the cable: %.3g of the load", worst);
-    QVERIFY(worst < 3e-3);
-    // The plate moves by the slip and the stretch of the free length across the gap.
-    const Model& m = r.model();
-    const double moved = m.blocks.x_ref[1] - m.blocks.x[1];
-    QVERIFY(std::abs(moved - (slip + P * kGap / kEA)) < 2e-3 * moved);
+    QFETCH(int, dim);
+    PullOut run(dim, "gravity -10 0\nsolve ratio=1e-9");
+    run.with_cables([&](const auto& K) { check_elastic(K, run.plate_moved()); });
   }
   // Past the bond strength sbond the grout slips over a length a from the face: there
   // N = P - sbond x, beyond it the elastic solution with N(a) = (sbond / alpha) tanh(alpha
   // (L - a)). So P = sbond a + (sbond / alpha) tanh(alpha (L - a)), and the cable enters the
   // rock with slip sbond / kbond + (P a - sbond a^2 / 2) / EA. The plate is drawn out slowly
   // (a load applied at once would overshoot and slip the grout further than the static answer).
+  void slippingGroutPullOut_data() { dimensions(); }
   void slippingGroutPullOut() {
-    ScriptRun r;
-    r.run(
-        pulled("fix group=plate\nvelocity group=plate vx=-0.02\nstep 2500\n"
-               "velocity group=plate vx=0\nstep 1000"));
-    const Cables& K = r.model().cables;
-    const double P = K.axial[0], s = 2e4, alpha = 1.0;
-    QVERIFY(P > 4e4 && P < 7e4);  // well into slip, short of the capacity 8e4
-    double lo = 0.0, hi = kL;     // bisection for a
-    for (int k = 0; k < 100; ++k) {
-      const double a = 0.5 * (lo + hi);
-      (s * a + s / alpha * std::tanh(alpha * (kL - a)) < P ? lo : hi) = a;
-    }
-    const double a = 0.5 * (lo + hi);
-    const double slip = s / kBond + (P * a - 0.5 * s * a * a) / kEA;
-    int yielding = 0;
-    for (uint32_t i = kFace; i < K.size(); ++i) yielding += K.slip_plastic[i] != 0.0;
-    qInfo(
-        "pulled with %.6g N: slipping length %.4g m (closed form %.4g), slip at the face %.6g m "
-        "(closed form %.6g)",
-        P, 0.1 * (yielding - 0.5), a, K.slip[kFace], slip);
-    QVERIFY(std::abs(K.slip[kFace] - slip) < 5e-3 * slip);
-    QVERIFY(std::abs(0.1 * (yielding - 0.5) - a) <= 0.1);
-    QVERIFY(std::abs(K.bond[kFace] - s) < 1e-3 * s);
+    QFETCH(int, dim);
+    PullOut run(dim,
+                "fix group=plate\nvelocity group=plate vx=-0.02\nstep 2500\n"
+                "velocity group=plate vx=0\nstep 1000");
+    run.with_cables([&](const auto& K) { check_slipping(K); });
   }
   // Pulled past its capacity the cable slides out through grout slipping everywhere; held there,
   // the force across the gap settles at the bond strength times the bonded length, 8e4 N.
+  void pullOutCapacity_data() { dimensions(); }
   void pullOutCapacity() {
+    QFETCH(int, dim);
+    PullOut run(dim,
+                "fix group=plate\nvelocity group=plate vx=-0.1\nstep 3000\n"
+                "velocity group=plate vx=0\nstep 2000");
+    run.with_cables([&](const auto& K) { check_capacity(K); });
+  }
+  // 3D: a plate (2 x 1 x 0.4 m, 20 kN) hung 0.1 m below the rock on three vertical cables tied
+  // to it off its centroid. Statics alone fixes the forces (vertical equilibrium and moments
+  // about both horizontal axes): the cables must hand the plate their torques as well as their
+  // pull, whatever their stiffness.
+  void threeCablesShareAHangingPlate() {
     ScriptRun r;
-    r.run(
-        pulled("fix group=plate\nvelocity group=plate vx=-0.1\nstep 3000\n"
-               "velocity group=plate vx=0\nstep 2000"));
-    const Cables& K = r.model().cables;
-    qInfo("force at pull-out %.6g N (closed form %.6g)", K.axial[0], 2e4 * kL);
-    QVERIFY(std::abs(K.axial[0] - 2e4 * kL) < 1e-3 * 2e4 * kL);
-    for (uint32_t i = kFace; i < K.size(); ++i) QVERIFY(K.state[i] & kCableBondYield);
+    const double xy[3][2] = {{-0.5, -0.3}, {0.7, -0.2}, {0.1, 0.35}};
+    std::string script =
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "block box -2,-2,0 2,2,2 material=rock group=rock\n"
+        "block box -1,-0.5,-0.5 1,0.5,-0.1 material=rock group=plate\nfix group=rock\n";
+    for (const auto& p : xy)
+      script += "cable " + std::to_string(p[0]) + "," + std::to_string(p[1]) + ",-0.1 " +
+                std::to_string(p[0]) + "," + std::to_string(p[1]) +
+                ",2 segments=21 ea=1e8 kbond=1e8 sbond=0 head=on\n";
+    r.run(script + "gravity 0 0 -10\nsolve ratio=1e-9");
+    const Cables3& K = r.model().cables3;
+    QCOMPARE(K.cables.size(), size_t(3));
+    Eigen::Matrix3d A;
+    for (int k = 0; k < 3; ++k) A.col(k) = Eigen::Vector3d(1.0, xy[k][0], xy[k][1]);
+    const Eigen::Vector3d T = A.inverse() * Eigen::Vector3d(2e4, 0.0, 0.0);
+    for (int k = 0; k < 3; ++k) {
+      const double f = K.axial[K.cables[static_cast<size_t>(k)].first];
+      qInfo("cable %d: %.6g N at the plate (statics %.6g N)", k + 1, f, T[k]);
+      QVERIFY(std::abs(f - T[k]) < 1e-3 * 2e4);
+    }
+    // The plate hangs level to within the cables' unequal stretch.
+    const Model& m = r.model();
+    const double turned =
+        2.0 *
+        std::acos(std::min(1.0, std::abs(m.blocks3.body[1].orientation.dot(m.blocks3.ref_q[1]))));
+    qInfo("plate turned %.3g rad", turned);
+    QVERIFY(turned < 1e-3);
   }
   // A cable tensioned against its faceplate: the plate presses the rock with the pretension,
   // less what the cable gives back as it shortens, and the grout beyond the free length holds it.
@@ -156,6 +248,56 @@ class TestCables : public QObject {
     QVERIFY(r.model().histories.series[0].element >= 0);
     r.run("step 10\ndelete group=rock");
     QCOMPARE(r.model().cables.size(), size_t(0));
+  }
+  // The same in 3D: state files keep the cable bit for bit, a history follows its node, and
+  // deleting the plate takes the head with it.
+  void deletionAndStateFiles3d() {
+    ScriptRun r;
+    r.run(pulled3("gravity -10 0 0\nstep 200\nhistory cable_axial cable=c at=3,0,0"));
+    Model& m = r.model();
+    const std::string path = QDir::tempPath().toStdString() + "/tessera_cables3.state";
+    save_state(m, path);
+    Model back = restore_state(path);
+    QCOMPARE(back.cables3.size(), m.cables3.size());
+    QCOMPARE(back.cables3.axial, m.cables3.axial);
+    QCOMPARE(back.cables3.slip, m.cables3.slip);
+    std::remove(path.c_str());
+    QCOMPARE(m.histories.series[0].element, 26);  // the node at x = 3
+    r.run("delete group=plate");
+    QCOMPARE(r.model().cables3.size(), size_t(41));
+    QCOMPARE(r.model().cables3.cables[0].head, uint8_t(0));
+    QCOMPARE(r.model().histories.series[0].element, 25);
+    r.run("step 10\ndelete group=rock");
+    QCOMPARE(r.model().cables3.size(), size_t(0));
+  }
+  // 3D models refuse what is 2D only, and name a node in the air by its three coordinates.
+  void badCablesIn3dAreNamed_data() {
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("pattern") << "cable pattern joints=j spacing=1 length=3 segments=3 ea=1e8 "
+                                "kbond=1e8 sbond=0"
+                             << "place 3D cables one by one";
+    QTest::newRow("row spacing") << "cable 1,0,0 4,0,0 segments=3 ea=1e8 kbond=1e8 sbond=0 "
+                                    "rowspacing=2"
+                                 << "rowspacing= is for 2D";
+    QTest::newRow("2D points") << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0"
+                               << "x,y,z";
+    QTest::newRow("node in the air") << "cable 1,0,0 8,0,0 segments=7 ea=1e8 kbond=1e8 sbond=0"
+                                     << "node 5 at (5, 0, 0)";
+  }
+  void badCablesIn3dAreNamed() {
+    QFETCH(QString, line);
+    QFETCH(QString, message);
+    ScriptRun r;
+    r.run(pulled3(""));
+    QString error;
+    try {
+      r.run(line.toStdString());
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    QVERIFY2(error.contains(message), qPrintable(error));
+    QCOMPARE(r.model().cables3.cables.size(), size_t(1));
   }
   // Bad input names the cable and what is wrong.
   void badCablesAreNamed_data() {

@@ -76,6 +76,9 @@ void joint_forces3d(Model& m) {
       },
       64);
   if (too_deep.any()) throw_overlap3(m, too_deep.index());
+  // Then the cables (locally damped in static runs).
+  if (!m.cables3.empty())
+    update_cables(m, m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha);
 }
 
 // Gravity plus contact forces, gathered in a fixed order per block; slave pieces hand theirs
@@ -105,6 +108,7 @@ void resultants3d(Model& m) {
       const auto mb = static_cast<size_t>(B.master[b]);
       B.force[mb] += B.force[b], B.torque[mb] += B.torque[b], B.applied[mb] += B.applied[b];
     }
+  add_cable_forces3(m);
 }
 
 // As in 2D, on translation and rotation.
@@ -215,9 +219,11 @@ std::vector<std::array<double, 2>> block_steps3d(const Model& m, double k) {
   std::vector<std::array<double, 2>> steps(B.size(), {kInf, kInf});
   std::vector<double> surface(B.size(), 0.0);
   for (size_t b = 0; b < B.size(); ++b) surface[static_cast<size_t>(B.master[b])] += B.surface[b];
+  // Cables add their grout's stiffness to the bodies that host them.
+  const std::vector<double> cables = cable_stiffness3(m);
   for (size_t b = 0; b < B.size(); ++b) {
-    if (B.fixity[b] == kFix3All || k <= 0.0 || B.body[b].mass <= 0.0 || B.is_slave(b)) continue;
-    const double kb = k * surface[b];
+    const double kb = k * surface[b] + cables[b];
+    if (B.fixity[b] == kFix3All || kb <= 0.0 || B.body[b].mass <= 0.0 || B.is_slave(b)) continue;
     const double r = B.bound_radius[b];
     steps[b][0] = 2.0 * std::sqrt(B.body[b].mass / kb);
     steps[b][1] = 2.0 * std::sqrt(B.body[b].principal.minCoeff() / (kb * r * r));

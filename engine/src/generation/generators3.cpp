@@ -3,9 +3,19 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/core/step.hpp"
 #include "tessera/zones/deformable3.hpp"
 
 namespace tessera {
+
+namespace {
+// Cables are anchored in the blocks as they are: cut and join first.
+void no_cables_yet(const Model& m) {
+  if (!m.cables3.empty())
+    throw ModelError("cut and join blocks before placing cables (cable '" +
+                     m.cables3.cables[0].name + "' is anchored in the blocks as they are)");
+}
+}  // namespace
 
 size_t add_block3(Model& m, const Polyhedron& p, int group, int material,
                   const std::vector<int>& face_tags) {
@@ -45,6 +55,7 @@ std::vector<CutBlock> cut_input3(const Model& m, const std::vector<size_t>& sele
 size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vector<CutBlock>& pieces,
                     const std::vector<int>& label_group,
                     std::vector<std::vector<size_t>>* rock = nullptr) {
+  no_cables_yet(m);
   Blocks3& B = m.blocks3;
   const auto group_of = [&](const CutBlock& p, int parent_group) {
     return p.label >= 0 ? label_group[static_cast<size_t>(p.label)] : parent_group;
@@ -161,6 +172,7 @@ std::vector<size_t> whole_bodies3(const Blocks3& B, const std::vector<size_t>& b
 }
 
 void join_blocks3(Model& m, const std::vector<size_t>& blocks) {
+  no_cables_yet(m);
   Blocks3& B = m.blocks3;
   const std::vector<size_t> pieces = whole_bodies3(B, blocks);
   std::vector<double> densities;
@@ -216,6 +228,7 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
   for (size_t b = 0; b < map.size() && m.det_pos3.size() == map.size(); ++b)
     if (map[b] >= 0) pos.push_back(m.det_pos3[b]), q.push_back(m.det_q3[b]);
   m.det_pos3 = std::move(pos), m.det_q3 = std::move(q);
+  remap_cables3(m, map);
   for (auto& s : m.histories.series)
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;

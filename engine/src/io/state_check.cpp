@@ -238,7 +238,8 @@ void check_rest(Checker& c, const Model& m) {
     const size_t zones = m.dim == 3 ? m.continuum3.zones.size() : nz;
     c.require(h.zone >= -1 && h.zone < int64_t(zones),
               "history '" + h.label + "' names a zone that does not exist");
-    const size_t elements = is_cable_quantity(h.quantity)   ? m.cables.size()
+    const size_t elements = is_cable_quantity(h.quantity)
+                                ? (m.dim == 3 ? m.cables3.size() : m.cables.size())
                             : is_liner_quantity(h.quantity) ? m.liners.size()
                                                             : m.support.size();
     c.require(h.element >= -1 && h.element < int64_t(elements),
@@ -266,24 +267,32 @@ void check_rest(Checker& c, const Model& m) {
       c.require(R.bolt[e] == b && anchor_ok(R.side_a[e]) && anchor_ok(R.side_b[e]),
                 "bolt '" + o.name + "' has an element anchored outside the model");
   }
-  // Cables: per-node arrays of one size, nodes inside their cables, hosts in the model.
-  const Cables& K = m.cables;
-  const size_t nk = K.cable.size();
-  for (const auto* v : {&K.bonded, &K.slip, &K.slip_plastic, &K.vel, &K.inertia, &K.bond, &K.rest,
-                        &K.plastic, &K.axial})
-    c.size(*v, nk, "cable node values");
-  c.size(K.host, nk, "cable hosts"), c.size(K.state, nk, "cable states");
-  c.size(K.pos, nk, "cable nodes"), c.size(K.axis, nk, "cable axes");
-  c.size(K.host_force, nk, "cable forces");
-  for (size_t i = 0; i < K.cables.size() && c.ok(); ++i) {
-    const Cable& o = K.cables[i];
-    c.require(o.count >= 2 && size_t(o.first) + o.count <= nk,
-              "cable '" + o.name + "' names nodes that do not exist");
-    for (uint32_t k = o.first; k < o.first + o.count && c.ok(); ++k)
-      c.require(K.cable[k] == i && anchor_ok(K.host[k]) &&
-                    (k + 1 == o.first + o.count || K.rest[k] > 0.0),
-                "cable '" + o.name + "' has a node outside the model or a segment of no length");
-  }
+  // Cables (2D and 3D): per-node arrays of one size, nodes inside their cables, hosts in the
+  // model.
+  auto check_cables = [&](const auto& K, auto host_ok) {
+    const size_t nk = K.cable.size();
+    for (const auto* v : {&K.bonded, &K.slip, &K.slip_plastic, &K.vel, &K.inertia, &K.bond, &K.rest,
+                          &K.plastic, &K.axial})
+      c.size(*v, nk, "cable node values");
+    c.size(K.host, nk, "cable hosts"), c.size(K.state, nk, "cable states");
+    c.size(K.pos, nk, "cable nodes"), c.size(K.axis, nk, "cable axes");
+    c.size(K.host_force, nk, "cable forces");
+    for (size_t i = 0; i < K.cables.size() && c.ok(); ++i) {
+      const Cable& o = K.cables[i];
+      c.require(o.count >= 2 && size_t(o.first) + o.count <= nk,
+                "cable '" + o.name + "' names nodes that do not exist");
+      for (uint32_t k = o.first; k < o.first + o.count && c.ok(); ++k)
+        c.require(K.cable[k] == i && host_ok(K.host[k]) &&
+                      (k + 1 == o.first + o.count || K.rest[k] > 0.0),
+                  "cable '" + o.name + "' has a node outside the model or a segment of no length");
+    }
+  };
+  check_cables(m.cables, anchor_ok);
+  check_cables(m.cables3, [&](const Anchor3& a) {
+    const auto n3 = int64_t(m.blocks3.size());
+    return a.block >= 0 && a.block < n3 && a.body >= 0 && a.body < n3 &&
+           m.blocks3.master[size_t(a.block)] == a.body;
+  });
   // Liners: per-node arrays of one size, nodes inside their liners, hosts in the model.
   const Liners& L = m.liners;
   const size_t nl = L.liner.size();

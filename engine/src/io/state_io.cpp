@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 14;
+constexpr uint32_t kVersion = 15;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -133,6 +133,19 @@ class Reader {
   std::string path_;
   uint64_t left_;
 };
+
+// Cables of either dimension.
+template <class IO, int D>
+void cable_fields(IO& io, CablesT<D>& K) {
+  size_t count = K.cables.size();
+  io.items(count);
+  K.cables.resize(count);
+  for (auto& c : K.cables)
+    io.str(c.name), io.pod(c.props), io.pod(c.first), io.pod(c.count), io.pod(c.head);
+  io.vec(K.cable), io.vec(K.host), io.vec(K.bonded), io.vec(K.slip), io.vec(K.slip_plastic);
+  io.vec(K.vel), io.vec(K.inertia), io.vec(K.bond), io.vec(K.state), io.vec(K.rest);
+  io.vec(K.plastic), io.vec(K.axial), io.vec(K.pos), io.vec(K.axis), io.vec(K.host_force);
+}
 
 // One field list for both directions, so save and restore cannot drift apart.
 template <class IO>
@@ -254,15 +267,8 @@ void fields(IO& io, auto& m) {
   }
   io.vec(R.bolt), io.vec(R.side_a), io.vec(R.side_b), io.vec(R.axis0), io.vec(R.axial);
   io.vec(R.shear), io.vec(R.ua), io.vec(R.us), io.vec(R.state), io.vec(R.point), io.vec(R.force);
-  auto& K = m.cables;
-  count = K.cables.size();
-  io.items(count);
-  K.cables.resize(count);
-  for (auto& c : K.cables)
-    io.str(c.name), io.pod(c.props), io.pod(c.first), io.pod(c.count), io.pod(c.head);
-  io.vec(K.cable), io.vec(K.host), io.vec(K.bonded), io.vec(K.slip), io.vec(K.slip_plastic);
-  io.vec(K.vel), io.vec(K.inertia), io.vec(K.bond), io.vec(K.state), io.vec(K.rest);
-  io.vec(K.plastic), io.vec(K.axial), io.vec(K.pos), io.vec(K.axis), io.vec(K.host_force);
+  cable_fields(io, m.cables);
+  cable_fields(io, m.cables3);
   auto& L = m.liners;
   count = L.liners.size();
   io.items(count);

@@ -15,7 +15,7 @@ namespace tessera {
 const std::map<std::string, Interpreter::Handler>& Interpreter::handlers3() {
   static const std::map<std::string, Handler> h = [] {
     std::map<std::string, Handler> t = handlers();
-    for (const char* only2d : {"voronoi", "arch", "round", "bolt", "cable", "liner"})
+    for (const char* only2d : {"voronoi", "arch", "round", "bolt", "liner"})
       t[only2d] = &Interpreter::cmd_only2d;
     t["block"] = &Interpreter::cmd_block3;
     t["region"] = &Interpreter::cmd_region3;

@@ -11,6 +11,7 @@
 #include "tessera/core/history.hpp"
 #include "tessera/generation/cutting.hpp"
 #include "tessera/script/expr.hpp"
+#include "tessera/support/anchor3.hpp"
 
 namespace fs = std::filesystem;
 
@@ -287,21 +288,10 @@ void Interpreter::done(Args& a) const {
 // the contact tolerance (a point on a face or edge, as on the top of a column).
 size_t Interpreter::block_at(const std::string& v) const {
   if (model_.dim == 3) {
-    const Blocks3& B3 = model_.blocks3;
-    const Vec3 p = point3(v);
-    // (The search ends at a block holding it; a model without a tolerance takes only those.)
-    size_t best = B3.size();
-    double nearest = std::max(model_.tolerance(), 0.0);
-    for (size_t b = 0; b < B3.size() && (best == B3.size() || nearest > 0.0); ++b) {
-      double outside = -1e300;
-      for (uint32_t f = B3.face_begin[b]; f < B3.face_begin[b + 1]; ++f)
-        outside = std::max(outside, B3.world_normal[f].dot(p) - B3.world_offset[f]);
-      if (B3.contains(b, p)) outside = 0.0;
-      if (outside <= nearest) nearest = outside, best = b;
-    }
-    if (best == B3.size())
+    const int b = block3_at(model_, point3(v), model_.tolerance());
+    if (b < 0)
       fail("no block contains the point " + v + " or has its surface within the tolerance");
-    return best;
+    return static_cast<size_t>(b);
   }
   const Blocks& B = model_.blocks;
   const Vec2 p = point(v);

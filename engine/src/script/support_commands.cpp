@@ -99,7 +99,8 @@ CableProperties Interpreter::cable_properties(Args& a) {
   take_num(a, "pretension", p.pretension);
   take_num(a, "mass", p.mass);
   double row = 1.0;
-  take_num(a, "rowspacing", row);
+  if (take_num(a, "rowspacing", row) && model_.dim == 3)
+    fail("rowspacing= is for 2D models (a slice 1 m thick); a 3D cable is one cable");
   if (!(p.ea > 0.0) || !(p.kbond > 0.0))
     fail("a cable's stiffnesses ea and kbond must be positive");
   if (p.tension < 0.0 || p.compression < 0.0 || p.sbond < 0.0 || p.mass < 0.0)
@@ -117,11 +118,14 @@ void Interpreter::cmd_cable(Args& a) {
   std::string name;
   take(a, "name", name);
   const bool pattern = !a.words.empty() && a.words[0] == "pattern";
+  if (pattern && model_.dim == 3)
+    fail("cable patterns are for 2D models; place 3D cables one by one: cable X,Y,Z X,Y,Z ...");
   const Pattern pat = pattern ? pattern_args(a, "cable pattern") : Pattern{};
   // Default names as for bolts: the opening's for a pattern, cableN for one.
   const Cables& K = model_.cables;
-  if (name.empty()) name = pattern ? pat.joints : "cable" + std::to_string(K.cables.size() + 1);
-  for (const Cable& c : K.cables)
+  const std::vector<Cable>& existing = model_.dim == 3 ? model_.cables3.cables : K.cables;
+  if (name.empty()) name = pattern ? pat.joints : "cable" + std::to_string(existing.size() + 1);
+  for (const Cable& c : existing)
     if (c.name == name || c.name.rfind(name + "-", 0) == 0)
       fail("a cable named '" + name + "' exists already: give another name=");
   double segments = 0.0, free = 0.0;
@@ -156,17 +160,21 @@ void Interpreter::cmd_cable(Args& a) {
     for (const std::string& why : skipped) log("cable pattern '" + name + "': skipped " + why);
     return;
   }
+  if (a.words.size() != 2 && model_.dim == 3)
+    fail("write 'cable X,Y,Z X,Y,Z segments=N ea=.. kbond=.. sbond=.. [tension=..]'");
   if (a.words.size() != 2)
     fail(
         "write 'cable X,Y X,Y segments=N ea=.. kbond=.. sbond=.. [tension=..]' or 'cable pattern "
         "joints=NAME spacing=S length=L segments=N ...'");
-  const Vec2 p0 = point(a.words[0]), p1 = point(a.words[1]);
+  const std::string w0 = a.words[0], w1 = a.words[1];
   a.words.clear();
   done(a);
-  install_cable(model_, name, p0, p1, n, p, free, head == "on");
+  if (model_.dim == 3)
+    install_cable3(model_, name, point3(w0), point3(w1), n, p, free, head == "on");
+  else
+    install_cable(model_, name, point(w0), point(w1), n, p, free, head == "on");
   log("cable '" + name + "': " + std::to_string(n) + " segment(s)");
 }
-
 
 void Interpreter::cmd_liner(Args& a) {
   std::string name, joints, v;
@@ -229,35 +237,42 @@ void Interpreter::cmd_liner(Args& a) {
       (model_.liners.liners.back().closed ? ", a closed ring" : ""));
 }
 
-
 int32_t Interpreter::support_point(Args& a, HistoryQuantity q, std::string& name) {
-  // The members of the kind the quantity is of: names, ranges, and where each point is.
+  // The members of the kind the quantity is of: names, ranges, and how far each point is from
+  // a given one.
   struct Member {
     std::string name;
     uint32_t first = 0, count = 0;
   };
   std::vector<Member> members;
-  std::function<Vec2(uint32_t)> at_point;
+  std::string at;
+  const bool has_at = take(a, "at", at);
+  const bool three = model_.dim == 3;
+  const Vec2 p2 = has_at && !three ? point(at) : Vec2::Zero();
+  const Vec3 p3 = has_at && three ? point3(at) : Vec3::Zero();
+  std::function<double(uint32_t)> distance;
   const char* kind = "bolt";
   const Reinforcement& R = model_.support;
-  const Cables& K = model_.cables;
   const Liners& L = model_.liners;
   if (is_bolt_quantity(q)) {
     for (const Bolt& b : R.bolts) members.push_back({b.name, b.first, b.count});
-    at_point = [&](uint32_t e) {
-      return Vec2(0.5 *
-                  (anchor_position(model_, R.side_a[e]) + anchor_position(model_, R.side_b[e])));
+    distance = [&](uint32_t e) {
+      return (0.5 * (anchor_position(model_, R.side_a[e]) + anchor_position(model_, R.side_b[e])) -
+              p2)
+          .norm();
     };
   } else if (is_cable_quantity(q)) {
     kind = "cable";
-    for (const Cable& c : K.cables) members.push_back({c.name, c.first, c.count});
-    at_point = [&](uint32_t i) { return K.pos[i]; };
+    for (const Cable& c : three ? model_.cables3.cables : model_.cables.cables)
+      members.push_back({c.name, c.first, c.count});
+    distance = [&](uint32_t i) {
+      return three ? (model_.cables3.pos[i] - p3).norm() : (model_.cables.pos[i] - p2).norm();
+    };
   } else {
     kind = "liner";
     for (const Liner& l : L.liners) members.push_back({l.name, l.first, l.count});
-    at_point = [&](uint32_t i) { return L.pos0[i]; };
+    distance = [&](uint32_t i) { return (L.pos0[i] - p2).norm(); };
   }
-  std::string at;
   if (!take(a, kind, name))
     missing(a, kind, std::string("a ") + kind + " history (the " + kind + "'s name)");
   const auto it =
@@ -265,13 +280,9 @@ int32_t Interpreter::support_point(Args& a, HistoryQuantity q, std::string& name
   if (it == members.end()) fail(std::string("no ") + kind + " is named '" + name + "'");
   // The point nearest at=, or the member's first.
   int32_t best = static_cast<int32_t>(it->first);
-  if (take(a, "at", at)) {
-    const Vec2 p = point(at);
-    double d = 1e300;
-    for (uint32_t i = it->first; i < it->first + it->count; ++i)
-      if ((at_point(i) - p).norm() < d)
-        d = (at_point(i) - p).norm(), best = static_cast<int32_t>(i);
-  }
+  double d = 1e300;
+  for (uint32_t i = it->first; has_at && i < it->first + it->count; ++i)
+    if (distance(i) < d) d = distance(i), best = static_cast<int32_t>(i);
   return best;
 }
 

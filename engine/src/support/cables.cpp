@@ -7,10 +7,12 @@
 
 #include "tessera/core/damping.hpp"
 #include "tessera/core/model.hpp"
+#include "tessera/support/anchor3.hpp"
 
 namespace tessera {
 
-size_t Cables::add(Cable c, const std::vector<Anchor2>& hosts, const std::vector<double>& len) {
+template <int D>
+size_t CablesT<D>::add(Cable c, const std::vector<Host>& hosts, const std::vector<double>& len) {
   c.first = static_cast<uint32_t>(size());
   c.count = static_cast<uint32_t>(hosts.size());
   for (size_t i = 0; i < hosts.size(); ++i) {
@@ -21,33 +23,37 @@ size_t Cables::add(Cable c, const std::vector<Anchor2>& hosts, const std::vector
       v->push_back(0.0);
     axial.push_back(i + 1 < hosts.size() ? c.props.pretension : 0.0);
     state.push_back(0);
-    pos.push_back(Vec2::Zero()), axis.push_back(Vec2::Zero()), host_force.push_back(Vec2::Zero());
+    pos.push_back(V::Zero()), axis.push_back(V::Zero()), host_force.push_back(V::Zero());
   }
   cables.push_back(std::move(c));
   return cables.size() - 1;
 }
 
+template struct CablesT<2>;
+template struct CablesT<3>;
+
 namespace {
 // Node axes from the host points: along the chord through the neighbours (one-sided at ends).
-void node_axes(const Model& m, const Cable& c, std::vector<Vec2>& h) {
-  Cables& K = const_cast<Model&>(m).cables;
+template <int D>
+void node_axes(const Model& m, CablesT<D>& K, const Cable& c,
+               std::vector<typename CablesT<D>::V>& h) {
   h.resize(c.count);
   for (uint32_t k = 0; k < c.count; ++k) h[k] = anchor_position(m, K.host[c.first + k]);
   for (uint32_t k = 0; k < c.count; ++k) {
-    const Vec2 d = h[std::min(k + 1, c.count - 1)] - h[k > 0 ? k - 1 : 0];
+    const typename CablesT<D>::V d = h[std::min(k + 1, c.count - 1)] - h[k > 0 ? k - 1 : 0];
     const double n = d.norm();
     if (n > 0.0) K.axis[c.first + k] = d / n;
   }
 }
-}  // namespace
 
-void update_cables(Model& m, double alpha) {
-  Cables& K = m.cables;
+template <int D>
+void update(Model& m, CablesT<D>& K, double alpha) {
+  using V = typename CablesT<D>::V;
   const double dt = m.dt;
-  std::vector<Vec2> h;
+  std::vector<V> h;
   for (const Cable& c : K.cables) {
     const CableProperties& p = c.props;
-    node_axes(m, c, h);
+    node_axes(m, K, c, h);
     const uint32_t n0 = c.first, n1 = c.first + c.count;
     for (uint32_t i = n0; i < n1; ++i) K.pos[i] = h[i - n0] - K.slip[i] * K.axis[i];
     // Segments: total elongation past the rest length, less the plastic part, capped.
@@ -65,12 +71,12 @@ void update_cables(Model& m, double alpha) {
       K.axial[i] = f;
     }
     for (uint32_t i = n0; i < n1; ++i) {
-      const Vec2 t = K.axis[i];
+      const V t = K.axis[i];
       // The segments' pull on the node.
-      Vec2 f = Vec2::Zero();
+      V f = V::Zero();
       if (i + 1 < n1) f += K.axial[i] * (K.pos[i + 1] - K.pos[i]).normalized();
       if (i > n0) f -= K.axial[i - 1] * (K.pos[i] - K.pos[i - 1]).normalized();
-      const Vec2 vh = anchor_velocity(m, K.host[i]);
+      const V vh = anchor_velocity(m, K.host[i]);
       if (c.head && i == n0) {
         // A faceplate: the node moves with its rock and hands it the segment's pull.
         K.vel[i] = vh.dot(t), K.host_force[i] = f, K.bond[i] = 0.0;
@@ -95,9 +101,9 @@ void update_cables(Model& m, double alpha) {
   }
 }
 
-namespace {
 // Each node's axial stiffness: its grout and the segments on either side.
-double node_stiffness(const Cables& K, const Cable& c, uint32_t i) {
+template <int D>
+double node_stiffness(const CablesT<D>& K, const Cable& c, uint32_t i) {
   double k = c.props.kbond * K.bonded[i];
   if (i + 1 < c.first + c.count) k += c.props.ea / K.rest[i];
   if (i > c.first) k += c.props.ea / K.rest[i - 1];
@@ -105,25 +111,17 @@ double node_stiffness(const Cables& K, const Cable& c, uint32_t i) {
 }
 // The steel's share of mass at each node (without a mass per metre, steel of the section that
 // gives EA: 7,850 kg/m3 over E = 200 GPa).
-double node_mass(const Cables& K, const Cable& c, uint32_t i) {
+template <int D>
+double node_mass(const CablesT<D>& K, const Cable& c, uint32_t i) {
   double len = 0.0;
   if (i + 1 < c.first + c.count) len += 0.5 * K.rest[i];
   if (i > c.first) len += 0.5 * K.rest[i - 1];
   const double per_metre = c.props.mass > 0.0 ? c.props.mass : 7850.0 * c.props.ea / 2e11;
   return per_metre * len;
 }
-}  // namespace
 
-double cable_host_stiffness(const Model& m, size_t i) {
-  const Cables& K = m.cables;
-  const Cable& c = K.cables[K.cable[i]];
-  if (c.head && i == c.first) return c.count > 1 ? c.props.ea / K.rest[i] : 0.0;
-  return c.props.kbond * K.bonded[i];
-}
-
-void scale_cable_nodes(Model& m, double dt) {
-  Cables& K = m.cables;
-  const bool dynamic = m.settings.damping == DampingMode::kNone;
+template <int D>
+void scale_nodes(CablesT<D>& K, bool dynamic, double dt) {
   for (const Cable& c : K.cables)
     for (uint32_t i = c.first; i < c.first + c.count; ++i) {
       // Static: the inertia whose own step 2 sqrt(I / k) is twice dt, the blocks' safety.
@@ -132,15 +130,64 @@ void scale_cable_nodes(Model& m, double dt) {
     }
 }
 
-std::vector<double> cable_node_steps(const Model& m) {
-  const Cables& K = m.cables;
-  std::vector<double> out;
+template <int D>
+void node_steps(const CablesT<D>& K, std::vector<double>& out) {
   for (const Cable& c : K.cables)
     for (uint32_t i = c.first; i < c.first + c.count; ++i) {
       const double k = node_stiffness(K, c, i), mass = node_mass(K, c, i);
       if (k > 0.0 && mass > 0.0 && !(c.head && i == c.first))
         out.push_back(2.0 * std::sqrt(mass / k));
     }
+}
+}  // namespace
+
+void update_cables(Model& m, double alpha) {
+  if (m.dim == 3)
+    update(m, m.cables3, alpha);
+  else
+    update(m, m.cables, alpha);
+}
+
+template <int D>
+double cable_host_stiffness(const CablesT<D>& K, size_t i) {
+  const Cable& c = K.cables[K.cable[i]];
+  if (c.head && i == c.first) return c.count > 1 ? c.props.ea / K.rest[i] : 0.0;
+  return c.props.kbond * K.bonded[i];
+}
+
+template double cable_host_stiffness(const CablesT<2>&, size_t);
+template double cable_host_stiffness(const CablesT<3>&, size_t);
+
+void scale_cable_nodes(Model& m, double dt) {
+  const bool dynamic = m.settings.damping == DampingMode::kNone;
+  scale_nodes(m.cables, dynamic, dt);
+  scale_nodes(m.cables3, dynamic, dt);
+}
+
+void add_cable_forces3(Model& m) {
+  Blocks3& B = m.blocks3;
+  const Cables3& K = m.cables3;
+  // In node order, onto the body (the master of a concave block's pieces).
+  for (size_t i = 0; i < K.size(); ++i) {
+    const auto b = static_cast<size_t>(K.host[i].body);
+    const Vec3 f = K.host_force[i];
+    B.force[b] += f, B.torque[b] += (K.pos[i] - B.body[b].position).cross(f);
+    B.applied[b] += f.norm();
+  }
+}
+
+std::vector<double> cable_stiffness3(const Model& m) {
+  const Cables3& K = m.cables3;
+  std::vector<double> k(m.blocks3.size(), 0.0);
+  for (size_t i = 0; i < K.size(); ++i)
+    k[static_cast<size_t>(K.host[i].body)] += cable_host_stiffness(K, i);
+  return k;
+}
+
+std::vector<double> cable_node_steps(const Model& m) {
+  std::vector<double> out;
+  node_steps(m.cables, out);
+  node_steps(m.cables3, out);
   return out;
 }
 

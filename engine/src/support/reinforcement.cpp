@@ -225,7 +225,7 @@ std::vector<double> reinforcement_stiffness(const Model& m) {
   }
   const Cables& K = m.cables;
   for (size_t i = 0; i < K.size(); ++i)
-    k[static_cast<size_t>(K.host[i].block)] += cable_host_stiffness(m, i);
+    k[static_cast<size_t>(K.host[i].block)] += cable_host_stiffness(m.cables, i);
   for (size_t i = 0; i < m.liners.size(); ++i)
     k[static_cast<size_t>(m.liners.host[i].block)] += liner_host_stiffness(m, i);
   return k;

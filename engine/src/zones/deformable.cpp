@@ -305,7 +305,7 @@ std::vector<double> node_timesteps2(const Model& m) {
   const size_t nc = m.cables.size();
   for (size_t i = 0; i < nc + m.liners.size(); ++i) {
     const Anchor2& a = i < nc ? m.cables.host[i] : m.liners.host[i - nc];
-    const double kc = i < nc ? cable_host_stiffness(m, i) : liner_host_stiffness(m, i - nc);
+    const double kc = i < nc ? cable_host_stiffness(m.cables, i) : liner_host_stiffness(m, i - nc);
     for (int k = 0; a.node[0] >= 0 && k < 3; ++k) {
       const auto n = static_cast<size_t>(a.node[k]);
       if (c.mass[n] > 0 && a.w[k] * kc > 0)

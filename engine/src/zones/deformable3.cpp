@@ -82,6 +82,8 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGra
                               const std::atomic<bool>* stop, bool quadratic) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  if (!m.cables3.empty())
+    throw std::invalid_argument("cables are placed already: zone blocks before placing support");
   // The body's pieces (one for a convex block), in block order: one mesh for all of them.
   std::vector<size_t> pieces;
   for (size_t k = 0; k < B.size(); ++k)

@@ -82,8 +82,9 @@ struct Model {
   Continuum3 continuum3;
   // Rock support: bolts across joints (2D).
   Reinforcement support;
-  // Grouted cables and liners (2D).
+  // Grouted cables (2D and 3D) and liners (2D).
   Cables cables;
+  Cables3 cables3;
   Liners liners;
 
   // Clock.
