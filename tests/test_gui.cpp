@@ -1242,7 +1242,7 @@ class TestGui : public QObject {
   }
 
   // Model > Cable pattern: offers the openings, and its command places grouted cables that the
-  // next snapshot draws; 3D models have no cable dialog yet.
+  // next snapshot draws (3D models: cablesShowThroughTheRockIn3d).
   void cablePatternThroughItsDialog() {
     const QString path = write_script(
         dir_, "cables.tess",
@@ -1282,6 +1282,57 @@ class TestGui : public QObject {
     QTRY_VERIFY2(caption().contains("cables: coloured by axial force"), qPrintable(caption()));
     if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
       w.grab().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") + "/cables_force.png");
+  }
+
+  // 3D cables lie inside the rock: the window draws them over it, purple while elastic, from any
+  // side; coloured by axial force they take the support's own scale and no purple is left.
+  void cablesShowThroughTheRockIn3d() {
+    const QString path =
+        write_script(dir_, "cables3d.tess",
+                     "dimension 3\ntolerance 0.01\nmaterial define rock density=2500\n"
+                     "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+                     "block box -2,-2,0 2,2,2 material=rock group=rock\n"
+                     "block box -1,-0.5,-0.5 1,0.5,-0.1 material=rock group=plate\nfix group=rock\n"
+                     "cable -0.5,0,-0.1 -0.5,0,2 segments=21 ea=1e8 kbond=1e8 sbond=0 head=on\n"
+                     "cable 0.5,0,-0.1 0.5,0,2 segments=21 ea=1e8 kbond=1e8 sbond=0 head=on\n"
+                     "gravity 0 0 -10\nstep 500\n");
+    MainWindow w;
+    QVERIFY(open_shown(w, path));
+    const auto purple = [&] {
+      QTest::qWait(100);
+      return static_cast<long>(model_pixels(w.view()->grabFramebuffer(), [](const QColor& c) {
+                                 return c.red() > 140 && c.green() < 40 && c.blue() > 140;
+                               }).size());
+    };
+    w.view()->resetCamera();
+    const long front = purple();
+    ViewOptions o = w.viewOptions();
+    o.azimuth += 90;
+    w.setViewOptions(o);
+    w.view()->resetCamera();
+    const long side = purple();
+    qInfo("cable pixels drawn over the rock: %ld, turned a quarter: %ld", front, side);
+    QVERIFY(front > 100);
+    QVERIFY(side > 100);
+    if (qEnvironmentVariableIsSet("TESSERA_TEST_SHOTS"))
+      w.view()->grabFramebuffer().save(qEnvironmentVariable("TESSERA_TEST_SHOTS") +
+                                       "/view_3d_cables.png");
+    // Model > Grouted cable in 3D: points x,y,z, no row spacing.
+    QPointer<CommandDialog> d = w.openDialog("cable");
+    QVERIFY(d);
+    d->setValue("#a", "0,0.3,-0.1");
+    d->setValue("#b", "0,0.3,2");
+    d->setValue("name", "third");
+    d->accept();
+    QVERIFY(wait_finished(w));
+    QVERIFY2(w.journal().last().startsWith("cable 0,0.3,-0.1 0,0.3,2 segments=8"),
+             qPrintable(w.journal().last()));
+    QVERIFY(!w.journal().last().contains("rowspacing"));
+    QCOMPARE(w.snapshot()->bolts.size(), size_t(3));
+    o.support_force = true;
+    w.setViewOptions(o);
+    QVERIFY(w.view()->supportScaleShown());
+    QCOMPARE(purple(), 0L);
   }
 
   // A dialog whose command fails stays open with its fields and shows the error; corrected, it

@@ -107,7 +107,8 @@ QImage depth_raster(const Scene& s, QSize size, const std::function<QPointF(cons
   }
   for (const auto& bar : s.bars) {
     const QRgb colour = qRgb(bar.colour.r, bar.colour.g, bar.colour.b);
-    const double z = bar.depth + 2 * lift;
+    // (3D support lies inside the rock: drawn over every face)
+    const double z = bar.over ? std::numeric_limits<double>::max() : bar.depth + 2 * lift;
     r.triangle(pixel(bar.corners[0], z), pixel(bar.corners[1], z), pixel(bar.corners[2], z),
                colour);
     r.triangle(pixel(bar.corners[0], z), pixel(bar.corners[2], z), pixel(bar.corners[3], z),

@@ -5,6 +5,25 @@
 namespace tessera::ui {
 
 namespace {
+// Grouted cables: the properties every cable dialog shares (per cable in 3D; 2D models take a
+// row spacing out of the plane).
+std::vector<CommandField> cable_fields(bool three) {
+  std::vector<CommandField> f{
+      {"segments", "Segments", "", "8", "nodes at both ends of each"},
+      {"ea", "Axial stiffness E A", "N", "1e8",
+       three ? "" : "per cable; divided by the row spacing"},
+      {"tension", "Yield force in tension", "N", "5e5", "empty: none"},
+      {"kbond", "Grout shear stiffness", "N/m/m", "1e8", "per metre of cable"},
+      {"sbond", "Grout bond strength", "N/m", "2e5", "per metre of cable; 0: none"},
+      {"pretension", "Pretension", "N", "", "empty: none"},
+      {"free", "Free (unbonded) length", "m", "", "from the head"},
+      {"head", "Faceplate at the head", "", "off", "on: tied to the rock"},
+      {"rowspacing", "Row spacing (out of plane)", "m", "1", ""},
+      {"name", "Name", "", "", "for histories"}};
+  if (three) f.erase(f.begin() + 8);
+  return f;
+}
+
 DialogSpec spec(const QString& name) {
   const QString msd = "a mean, or mean,sd for a normal spread";
   if (name == "material")
@@ -114,18 +133,7 @@ DialogSpec spec(const QString& name) {
     s.fields.insert(s.fields.end(), bolt_props.begin(), bolt_props.end());
     return s;
   }
-  // Grouted cables: the properties both dialogs share.
-  const std::vector<CommandField> cable_props{
-      {"segments", "Segments", "", "8", "nodes at both ends of each"},
-      {"ea", "Axial stiffness E A", "N", "1e8", "per cable; divided by the row spacing"},
-      {"tension", "Yield force in tension", "N", "5e5", "empty: none"},
-      {"kbond", "Grout shear stiffness", "N/m/m", "1e8", "per metre of cable"},
-      {"sbond", "Grout bond strength", "N/m", "2e5", "per metre of cable; 0: none"},
-      {"pretension", "Pretension", "N", "", "empty: none"},
-      {"free", "Free (unbonded) length", "m", "", "from the head"},
-      {"head", "Faceplate at the head", "", "off", "on: tied to the rock"},
-      {"rowspacing", "Row spacing (out of plane)", "m", "1", ""},
-      {"name", "Name", "", "", "for histories"}};
+  const std::vector<CommandField> cable_props = cable_fields(false);
   if (name == "cable") {
     DialogSpec s{"Grouted cable",
                  "cable",
@@ -369,8 +377,17 @@ DialogSpec spec3(const QString& name) {
             {{"#gx", "Along x", "m/s²", "0", ""},
              {"#gy", "Along y", "m/s²", "0", ""},
              {"#gz", "Along z", "m/s²", "-9.81", "z up"}}};
+  if (name == "cable") {
+    DialogSpec s{
+        "Grouted cable",
+        "cable",
+        {{"#a", "From", "x,y,z m", "0,0,0", "on the face"}, {"#b", "To", "x,y,z m", "0,4,0", ""}}};
+    const std::vector<CommandField> props = cable_fields(true);
+    s.fields.insert(s.fields.end(), props.begin(), props.end());
+    return s;
+  }
   if (name == "rectangle" || name == "voronoi" || name == "arch" || name == "bolt" ||
-      name == "boltpattern" || name == "cable" || name == "cablepattern" || name == "liner")
+      name == "boltpattern" || name == "cablepattern" || name == "liner")
     return {};
   return spec(name);
 }

@@ -167,6 +167,8 @@ void MainWindow::preview3(const QString& name, const CommandDialog& d) {
       for (size_t k = 0; k < portal.size(); k += std::max<size_t>(1, portal.size() / 8))
         lines.push_back({portal[k], end[k]});
     }
+  } else if (name == "cable" && point3(d.value("#a"), a) && point3(d.value("#b"), b)) {
+    lines.push_back({a, b});
   } else if (name == "wall") {
     // The 2D running-bond pattern on the wall's face, and the wall's box.
     double brick[3];

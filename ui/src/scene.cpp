@@ -393,6 +393,7 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
       const Vec2 n = perp((q - p).normalized());
       const uint8_t st = b.state[k] | b.state[k + 1];
       SceneBar bar;
+      bar.support = static_cast<int>(&b - s.bolts.data()), bar.segment = static_cast<int>(k);
       bar.colour = st & kBoltBroken                           ? broken
                    : st & (kBoltAxialYield | kBoltShearYield) ? yielding
                                                               : elastic;
@@ -414,7 +415,7 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
   out.support_legend.entries = {{"elastic", elastic}, {"yielding", yielding}};
   if (bolts > 0) out.support_legend.entries.push_back({"broken", broken});
   if (o.support_force) {
-    out.support_legend.title = "axial force [N/m]";  // the caption says of what
+    out.support_legend.title = s.three ? "axial force [N]" : "axial force [N/m]";
     out.support_legend.entries.clear();
     out.support_legend.continuous = true;
     out.support_legend.lo = flo, out.support_legend.hi = fhi;
@@ -432,13 +433,46 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
                    (f ? "coloured by axial force (tension positive); "
                       : "purple elastic, orange yielding or grout slipping; ") +
                    std::to_string(slipping) + " of " + std::to_string(nodes) +
-                   " nodes yielding or slipping; largest axial force " + number(cmax) + " N/m";
+                   " nodes yielding or slipping; largest axial force " + number(cmax) +
+                   (s.three ? " N; drawn through the rock" : " N/m");
   if (liners > 0)
     out.caption += std::string("   liners: ") +
                    (f ? "coloured by axial force (tension positive); "
                       : "purple elastic, orange at a capacity or slipping on the rock; ") +
                    std::to_string(liner_yield) + " of " + std::to_string(liner_nodes) +
                    " nodes yielding or slipping; largest thrust " + number(lmax) + " N/m";
+}
+
+// 3D support (cables): drawn as in 2D from their projected nodes, over the faces (it lies inside
+// the rock), each bar with its depth and its segment's ends in model coordinates.
+void add_support3(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
+  if (s.bolts.empty()) return;
+  const ViewAxes view(o);
+  Snapshot flat;
+  flat.three = true;
+  flat.bolts = s.bolts;
+  for (size_t i = 0; i < flat.bolts.size(); ++i)
+    for (size_t k = 0; k < flat.bolts[i].points3.size(); ++k)
+      flat.bolts[i].points[k] = view(shown_support3(s, o, s.bolts[i], k));
+  ViewOptions plain = o;
+  plain.magnify = 1.0;  // magnified above, in 3D
+  const size_t first = out.bars.size();
+  add_bolts(flat, plain, out, size);
+  for (size_t i = first; i < out.bars.size(); ++i) {
+    SceneBar& bar = out.bars[i];
+    const SnapshotBolt& b = s.bolts[static_cast<size_t>(bar.support)];
+    const auto k = static_cast<size_t>(bar.segment);
+    const Vec3 p = shown_support3(s, o, b, k), q = shown_support3(s, o, b, k + 1);
+    bar.over = true;
+    bar.depth = view.depth(0.5 * (p + q));
+    bar.world[0] = bar.world[3] = p, bar.world[1] = bar.world[2] = q;
+  }
+}
+
+// Where a 3D bar is: its sub-contact's point, or its support segment's middle.
+Vec3 bar_point3(const Snapshot& s, const ViewOptions& o, const SceneBar& bar) {
+  if (bar.contact < 0) return 0.5 * (bar.world[0] + bar.world[1]);
+  return shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]);
 }
 
 void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
@@ -470,8 +504,9 @@ void add_arrows(const Snapshot& s, const ViewOptions& o, Scene& out, double size
 void set_bar_squares3(const Snapshot& s, const ViewOptions& o, Scene& out) {
   double wmax = 0;
   for (const SceneBar& bar : out.bars)
-    wmax = std::max(wmax, (bar.corners[3] - bar.corners[0]).norm());
+    if (bar.contact >= 0) wmax = std::max(wmax, (bar.corners[3] - bar.corners[0]).norm());
   for (SceneBar& bar : out.bars) {
+    if (bar.contact < 0) continue;  // support: its segment's ends (add_support3)
     const SnapshotContact& c = s.contacts[static_cast<size_t>(bar.contact)];
     const Vec3 at = shown_point3(s, o, c);
     const Vec3 n = c.normal3.norm() > 0 ? Vec3(c.normal3.normalized()) : Vec3::UnitZ();
@@ -516,12 +551,12 @@ Scene build_scene(const Snapshot& s, const ViewOptions& options, bool camera) {
     set_bar_depths3(s, o, out);
     if (out.camera) set_bar_squares3(s, o, out);
     add_arrows(s, o, out, size);
+    add_support3(s, o, out, size);
     if (o.cut) {
       // What the cut takes away: sub-contacts and arrows above the plane.
       // (at the point drawn: magnified with block a, as the faces are)
-      std::erase_if(out.bars, [&](const SceneBar& bar) {
-        return cut_away(o, shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]));
-      });
+      std::erase_if(out.bars,
+                    [&](const SceneBar& bar) { return cut_away(o, bar_point3(s, o, bar)); });
       std::erase_if(out.arrows, [&](const SceneArrow& a) { return cut_away(o, a.tail3); });
       char cut[120];
       std::snprintf(cut, sizeof cut, "   cut by the plane %.0f/%03.0f through %s, %s, %s",
@@ -531,9 +566,8 @@ Scene build_scene(const Snapshot& s, const ViewOptions& options, bool camera) {
     }
     // In perspective: nothing behind the eye.
     if (const ViewAxes view(o); view.perspective) {
-      std::erase_if(out.bars, [&](const SceneBar& bar) {
-        return !view.in_front(shown_point3(s, o, s.contacts[static_cast<size_t>(bar.contact)]));
-      });
+      std::erase_if(out.bars,
+                    [&](const SceneBar& bar) { return !view.in_front(bar_point3(s, o, bar)); });
       std::erase_if(out.arrows, [&](const SceneArrow& a) {
         return !view.in_front(a.tail3) || !view.in_front(a.head3);
       });

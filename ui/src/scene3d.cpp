@@ -184,6 +184,13 @@ Vec3 shown_point3(const Snapshot& s, const ViewOptions& o, const SnapshotContact
   return c.point3 + (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(c.a)]);
 }
 
+Vec3 shown_support3(const Snapshot& s, const ViewOptions& o, const SnapshotBolt& b, size_t k) {
+  const int blk = b.block[k];
+  if (o.magnify == 1.0 || blk < 0 || static_cast<size_t>(blk) >= s.blocks.size())
+    return b.points3[k];
+  return b.points3[k] + (o.magnify - 1.0) * displacement(s.blocks[static_cast<size_t>(blk)]);
+}
+
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out) {
   const ViewAxes view(o);
   for (SceneBar& bar : out.bars) {

@@ -63,6 +63,8 @@ bool cut_away(const ViewOptions& o, const Vec3& p);
 Snapshot flatten3(const Snapshot& s, const ViewOptions& o);
 // A sub-contact's point as drawn: magnified like the blocks, moving with block a.
 Vec3 shown_point3(const Snapshot& s, const ViewOptions& o, const SnapshotContact& c);
+// A support point (node k of a cable) as drawn: magnified with the block that hosts it.
+Vec3 shown_support3(const Snapshot& s, const ViewOptions& o, const SnapshotBolt& b, size_t k);
 // The contact bars' heights towards the viewer (the sub-contacts' points, magnified like the
 // blocks), for bars built from the projected snapshot.
 void set_bar_depths3(const Snapshot& s, const ViewOptions& o, Scene& out);

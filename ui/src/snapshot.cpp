@@ -328,6 +328,20 @@ void copy_bolts(const Model& m, Snapshot& s) {
     }
     s.bolts.push_back(std::move(o));
   }
+  const Cables3& K3 = m.cables3;
+  for (const Cable& c : K3.cables) {
+    SnapshotBolt o;
+    o.name = c.name, o.cable = true;
+    for (uint32_t i = c.first; i < c.first + c.count; ++i) {
+      o.points3.push_back(K3.pos[i]);
+      o.points.push_back(K3.pos[i].head<2>());
+      o.block.push_back(K3.host[i].block);
+      o.axial.push_back(K3.axial[i]);
+      o.shear.push_back(0.0);
+      o.state.push_back(K3.state[i] ? kBoltAxialYield : 0);
+    }
+    s.bolts.push_back(std::move(o));
+  }
   const Liners& L = m.liners;
   for (const Liner& l : L.liners) {
     SnapshotBolt o;
@@ -353,6 +367,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
   s.rounding = m.settings.rounding;
   if (m.dim == 3) {
     copy_blocks3(m, s);
+    copy_bolts(m, s);
     copy_catalogue(m, s);
     copy_stages(stages, s);
     copy_histories(m, s);

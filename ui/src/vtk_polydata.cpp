@@ -9,16 +9,26 @@
 
 namespace tessera::ui {
 
-void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments) {
+void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments,
+                const std::vector<Rgb>& colours) {
   vtkNew<vtkPoints> pts;
   vtkNew<vtkCellArray> lines;
-  for (const auto& s : segments) {
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetName("colour");
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const auto& s = segments[i];
     const vtkIdType ids[2] = {pts->InsertNextPoint(s[0].data()), pts->InsertNextPoint(s[1].data())};
     lines->InsertNextCell(2, ids);
+    if (i < colours.size()) {
+      const unsigned char c[3] = {colours[i].r, colours[i].g, colours[i].b};
+      rgb->InsertNextTypedTuple(c);
+    }
   }
   pd->Initialize();
   pd->SetPoints(pts);
   pd->SetLines(lines);
+  if (!colours.empty()) pd->GetCellData()->SetScalars(rgb);
 }
 
 namespace {

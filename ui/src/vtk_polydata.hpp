@@ -16,7 +16,8 @@ namespace tessera::ui {
 // and true is returned.
 bool fill_polygons(vtkPolyData* pd, const std::vector<std::vector<Vec3>>& polys,
                    const std::vector<Rgb>& colours);
-// Line segments as line cells.
-void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments);
+// Line segments as line cells, with an RGB colour per cell if colours are given.
+void fill_lines(vtkPolyData* pd, const std::vector<std::array<Vec3, 2>>& segments,
+                const std::vector<Rgb>& colours = {});
 
 }  // namespace tessera::ui

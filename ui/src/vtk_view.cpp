@@ -122,7 +122,7 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   window_->SetFrameBlitModeToBlitToCurrent();
   // The model in its own viewport on a second layer, over a frame that holds the title, caption
   // and colour bars in margins the model never covers, however it is zoomed or panned.
-  window_->SetNumberOfLayers(3);
+  window_->SetNumberOfLayers(4);
   window_->AddRenderer(frame_);
   window_->AddRenderer(renderer_);
   frame_->SetLayer(0);
@@ -132,8 +132,15 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   renderer_->SetViewport(kModelViewport[0], kModelViewport[1], kModelViewport[2],
                          kModelViewport[3]);
   renderer_->GetActiveCamera()->ParallelProjectionOn();
+  // 3D support over the model: the same camera and viewport, its own depth.
+  overlay_->SetLayer(2);
+  overlay_->SetViewport(kModelViewport[0], kModelViewport[1], kModelViewport[2], kModelViewport[3]);
+  overlay_->SetActiveCamera(renderer_->GetActiveCamera());
+  overlay_->InteractiveOff();
+  overlay_->AddActor(support_actor_);
+  window_->AddRenderer(overlay_);
   // 3D: the triad in the lower left corner, over the frame (its own layer, its own depth).
-  triad_->SetLayer(2);
+  triad_->SetLayer(3);
   triad_->SetViewport(0.0, 0.1, 0.15, 0.3);
   triad_->InteractiveOff();
   triad_->AddActor(triad_axes_);
@@ -171,6 +178,10 @@ VtkView::VtkView(QWidget* parent) : QOpenGLWidget(parent) {
   // 3D sub-contacts lie on the faces they join: drawn a hair in front.
   bars_actor_->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
   set_line_colour(arrows_actor_, arrows_, 0, 0, 0, 1.5);
+  set_direct_colours(support_actor_, support_);
+  support_actor_->GetProperty()->SetLineWidth(4.0f);
+  support_actor_->GetProperty()->SetRenderLinesAsTubes(true);
+  support_actor_->GetProperty()->LightingOff();
   set_line_colour(band_actor_, band_, 0.85, 0.1, 0.1, 2.0);
   band_actor_->GetProperty()->SetPointSize(7.0);
   set_line_colour(preview_actor_, preview_, 0.1, 0.3, 0.9, 1.5);
@@ -359,6 +370,7 @@ void VtkView::rebuild() {
       polys.push_back({b.corners[0], b.corners[1], b.corners[2], b.corners[3]}),
           colours.push_back(b.colour);
     fill_polygons(bars_, at_height(polys, 0.01), colours);
+    fill_lines(support_, {});
     // Arrows as line cells: shaft and two head strokes.
     std::vector<std::array<Vec3, 2>> strokes;
     const auto line = [&](Vec2 a, Vec2 b) {

@@ -52,9 +52,16 @@ void VtkView::rebuild3() {
   fill_lines(highlight_, highlight);
   fill_polygons(zones_, {}, {});
   faces.clear(), colours.clear();
+  std::vector<std::array<Vec3, 2>> support;
+  std::vector<Rgb> support_colours;
   for (const auto& b : scene_.bars)
-    faces.push_back({b.world[0], b.world[1], b.world[2], b.world[3]}), colours.push_back(b.colour);
+    if (b.over)
+      support.push_back({b.world[0], b.world[1]}), support_colours.push_back(b.colour);
+    else
+      faces.push_back({b.world[0], b.world[1], b.world[2], b.world[3]}),
+          colours.push_back(b.colour);
   fill_polygons(bars_, faces, colours);
+  fill_lines(support_, support, support_colours);
   // Arrows: shaft and two head strokes, in a plane holding the arrow.
   std::vector<std::array<Vec3, 2>> strokes;
   for (const auto& a : scene_.arrows) {

@@ -246,10 +246,11 @@ double history_value(const Model& m, const HistorySeries& s) {
     return s.quantity == HistoryQuantity::kBoltAxial ? R.axial[e] : R.shear[e];
   }
   if (is_cable_quantity(s.quantity)) {
-    const Cables& K = m.cables;
-    if (s.element < 0 || static_cast<size_t>(s.element) >= K.size()) return std::nan("");
+    const auto& axial = m.dim == 3 ? m.cables3.axial : m.cables.axial;
+    const auto& slip = m.dim == 3 ? m.cables3.slip : m.cables.slip;
+    if (s.element < 0 || static_cast<size_t>(s.element) >= axial.size()) return std::nan("");
     const auto i = static_cast<size_t>(s.element);
-    return s.quantity == HistoryQuantity::kCableAxial ? K.axial[i] : K.slip[i];
+    return s.quantity == HistoryQuantity::kCableAxial ? axial[i] : slip[i];
   }
   if (is_liner_quantity(s.quantity)) {
     if (s.element < 0 || static_cast<size_t>(s.element) >= m.liners.size()) return std::nan("");

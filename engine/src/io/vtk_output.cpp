@@ -131,8 +131,21 @@ void write_contacts(const Model& m, const std::string& path) {
 // for a cable's, 3 for a liner's, and its number.
 void write_support(const Model& m, const std::string& path) {
   const Reinforcement& R = m.support;
-  const Cables& K = m.cables;
-  std::vector<BoltPoint> pts;
+  // The cables of the model's dimension (the same fields in 2D and 3D); points in 3D (z = 0 in
+  // 2D models).
+  const bool three = m.dim == 3;
+  const std::vector<Cable>& cables = three ? m.cables3.cables : m.cables.cables;
+  const std::vector<uint32_t>& cable_of = three ? m.cables3.cable : m.cables.cable;
+  const std::vector<double>& k_axial = three ? m.cables3.axial : m.cables.axial;
+  const std::vector<double>& k_slip = three ? m.cables3.slip : m.cables.slip;
+  const std::vector<double>& k_bond = three ? m.cables3.bond : m.cables.bond;
+  const std::vector<uint8_t>& k_state = three ? m.cables3.state : m.cables.state;
+  auto flat = [](const Vec2& p) { return Vec3(p.x(), p.y(), 0.0); };
+  struct Point {
+    Vec3 at;
+    int32_t element = -1;
+  };
+  std::vector<Point> pts;
   std::vector<int32_t> seg_bolt, seg_kind;
   std::vector<size_t> seg_start, seg_end;
   for (size_t b = 0; b < R.bolts.size(); ++b) {
@@ -140,17 +153,18 @@ void write_support(const Model& m, const std::string& path) {
     for (size_t k = 0; k + 1 < p.size(); ++k)
       seg_start.push_back(pts.size() + k), seg_end.push_back(pts.size() + k + 1),
           seg_bolt.push_back(static_cast<int32_t>(b + 1));
-    pts.insert(pts.end(), p.begin(), p.end());
+    for (const BoltPoint& q : p) pts.push_back({flat(q.at), q.element});
   }
   seg_kind.assign(seg_bolt.size(), 1);
   const size_t first_node = pts.size();
-  for (size_t c = 0; c < K.cables.size(); ++c) {
-    const Cable& cab = K.cables[c];
+  for (size_t c = 0; c < cables.size(); ++c) {
+    const Cable& cab = cables[c];
     for (uint32_t k = 0; k + 1 < cab.count; ++k) {
       seg_start.push_back(pts.size() + k), seg_end.push_back(pts.size() + k + 1);
       seg_bolt.push_back(static_cast<int32_t>(c + 1)), seg_kind.push_back(2);
     }
-    for (uint32_t i = cab.first; i < cab.first + cab.count; ++i) pts.push_back({K.pos[i], -1});
+    for (uint32_t i = cab.first; i < cab.first + cab.count; ++i)
+      pts.push_back({three ? m.cables3.pos[i] : flat(m.cables.pos[i]), -1});
   }
   // Liners after the cables: a closed one's last element back to its first node (kind 3).
   const size_t first_liner = pts.size();
@@ -166,7 +180,7 @@ void write_support(const Model& m, const std::string& path) {
       seg_kind.push_back(3);
     }
     for (uint32_t i = ln.first; i < ln.first + ln.count; ++i)
-      pts.push_back({liner_position(L, i), -1});
+      pts.push_back({flat(liner_position(L, i)), -1});
   }
   // A liner node's value, or zero elsewhere.
   auto at_liner = [&](auto value) {
@@ -177,7 +191,7 @@ void write_support(const Model& m, const std::string& path) {
     return [&, last_zero](size_t k) {
       if (k < first_node || k >= first_liner) return 0.0;
       const size_t i = k - first_node;
-      const bool last = i + 1 == K.size() || K.cable[i + 1] != K.cable[i];
+      const bool last = i + 1 == cable_of.size() || cable_of[i + 1] != cable_of[i];
       return last && last_zero ? 0.0 : v[i];
     };
   };
@@ -192,7 +206,7 @@ void write_support(const Model& m, const std::string& path) {
   auto at = [&](const std::vector<double>& v) {
     return [&](size_t k) { return pts[k].element >= 0 ? v[size_t(pts[k].element)] : 0.0; };
   };
-  const auto cable_axial = node(K.axial, true);
+  const auto cable_axial = node(k_axial, true);
   array(out, "Float64", "axial_force", 1, n, [&](size_t k) {
     return k < first_node    ? at(R.axial)(k)
            : k < first_liner ? cable_axial(k)
@@ -201,14 +215,14 @@ void write_support(const Model& m, const std::string& path) {
   array(out, "Float64", "shear_force", 1, n, at(R.shear));
   array(out, "Float64", "axial_displacement", 1, n, at(R.ua));
   array(out, "Float64", "shear_displacement", 1, n, at(R.us));
-  array(out, "Float64", "bond_slip", 1, n, node(K.slip, false));
-  array(out, "Float64", "bond_force", 1, n, node(K.bond, false));
+  array(out, "Float64", "bond_slip", 1, n, node(k_slip, false));
+  array(out, "Float64", "bond_force", 1, n, node(k_bond, false));
   array(out, "Float64", "moment", 1, n, at_liner([&](size_t i) { return liner_moment(L, i); }));
   array(out, "Float64", "thrust", 1, n, at_liner([&](size_t i) { return liner_thrust(L, i); }));
   array(out, "Float64", "pressure", 1, n, at_liner([&](size_t i) { return L.pressure[i]; }));
   array(out, "Int32", "state", 1, n, [&](size_t k) {
     return k >= first_liner      ? int{L.state[k - first_liner]}
-           : k >= first_node     ? int{K.state[k - first_node]}
+           : k >= first_node     ? int{k_state[k - first_node]}
            : pts[k].element >= 0 ? int{R.state[size_t(pts[k].element)]}
                                  : 0;
   });
@@ -418,7 +432,8 @@ void VtkSeries::write(const Model& m) {
     }
   }
   // Support likewise, from the first snapshot that has some (empty once it is all gone).
-  if (!m.support.empty() || !m.cables.empty() || !m.liners.empty() || support_from_ >= 0) {
+  if (!m.support.empty() || !m.cables.empty() || !m.cables3.empty() || !m.liners.empty() ||
+      support_from_ >= 0) {
     if (support_from_ < 0) support_from_ = static_cast<int>(times_.size());
     std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
     write_support(m, dir_ + "/support_" + name);

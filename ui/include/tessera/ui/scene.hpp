@@ -33,6 +33,11 @@ struct SceneBar {
   double depth = 0;  // 3D: the sub-contact's height towards the viewer
   Vec3 world[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};  // 3D, for a camera:
   // a square in the sub-contact's plane
+  // A bolt's or cable's segment (contact -1): its index in Snapshot::bolts and the segment. In 3D
+  // support lies inside the rock, so it is drawn over the faces (`over`), with the segment's ends
+  // in model coordinates (world[0], world[1]) for a camera.
+  int support = -1, segment = -1;
+  bool over = false;
 };
 
 struct SceneArrow {

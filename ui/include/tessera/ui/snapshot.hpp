@@ -67,6 +67,7 @@ struct SnapshotBolt {
   bool cable = false;
   bool liner = false;  // a liner, drawn as a cable is (its axial force: tension positive)
   std::vector<Vec2> points;
+  std::vector<Vec3> points3;  // 3D models' cables (points: x and y)
   std::vector<int> block;
   std::vector<double> axial, shear;
   std::vector<uint8_t> state;

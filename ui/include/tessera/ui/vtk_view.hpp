@@ -160,6 +160,11 @@ class VtkView : public QOpenGLWidget {
   vtkNew<vtkAxisActor2D> x_axis_, y_axis_;
   std::vector<double> x_ticks_, y_ticks_;
   vtkNew<vtkTextActor> title_, caption_;
+  // 3D support (cables) lies inside the rock: lines drawn over the model, by a renderer on the
+  // model's camera and viewport, a layer above it.
+  vtkNew<vtkRenderer> overlay_;
+  vtkNew<vtkPolyData> support_;
+  vtkNew<vtkActor> support_actor_;
   vtkNew<vtkRenderer> triad_;  // the axes triad (east, north, up), turned with the camera
   vtkNew<vtkAxesActor> triad_axes_;
   vtkNew<vtkCellPicker> picker_;
