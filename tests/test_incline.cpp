@@ -79,6 +79,20 @@ class TestIncline : public QObject {
     QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("set k = blockat(50, 50)"));
     QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("set k = blockat(0)"));
   }
+  // Block numbers are kept when others are deleted (as messages, the window's selection and VTK
+  // show them): `block=`, per-block values and blockat() use them, not the order in memory.
+  void blockNumbersOutliveDeletion() {
+    ScriptRun r;
+    r.run(incline(30, 40) + "block 3,3 4,3 4,4 3,4 material=rock\ndelete block=1");
+    QCOMPARE(r.model().blocks.size(), size_t(2));
+    r.run("set b = blockat(3.5,3.5)\nset y = ypos(3)\nfix block=3");
+    QCOMPARE(r.interp->variable("b"), 3.0);
+    QCOMPARE(r.interp->variable("y"), r.model().blocks.y[1]);
+    QCOMPARE(r.model().blocks.fixity[1], uint8_t(kFixAll));
+    QCOMPARE(r.model().blocks.fixity[0], uint8_t(0));
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("fix block=1"));
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("set k = xdisp(1)"));
+  }
   // A cohesive joint with no tensile strength keeps its bond from the first cycle (a block set
   // exactly on another has a round-off gap, which is not tension), and its cohesion holds the
   // block until W sin(psi) = c L. Friction zero: the two base contacts then share the shear

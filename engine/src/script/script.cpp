@@ -210,15 +210,16 @@ double Interpreter::num(const std::string& text) const {
       std::ostringstream at;
       at.precision(17);
       for (size_t k = 0; k < args.size(); ++k) at << (k ? "," : "") << args[k];
-      return v = static_cast<double>(block_at(at.str()) + 1), true;
+      return v = static_cast<double>(block_id(block_at(at.str()))), true;
     }
     HistoryQuantity q;
     bool per_block = false;
     if (!parse_history_quantity(f, q, per_block) || !per_block || args.size() != 1) return false;
     const auto id = static_cast<int64_t>(args[0]);
-    if (id < 1 || id > static_cast<int64_t>(model_.block_count()))
+    const int64_t b = block_index(id);
+    if (b < 0)
       throw ExprError(f + "(" + std::to_string(id) + "): there is no block " + std::to_string(id));
-    v = history_value(model_, {q, static_cast<int32_t>(id - 1), -1, ""});
+    v = history_value(model_, {q, static_cast<int32_t>(b), -1, ""});
     return true;
   };
   try {
@@ -284,6 +285,18 @@ void Interpreter::done(Args& a) const {
     }
 }
 
+// A block's number (kept when others are deleted, as messages, the window and VTK show it) and
+// its index; -1 if no block has the number.
+int Interpreter::block_id(size_t b) const {
+  return model_.dim == 3 ? model_.blocks3.id[b] : model_.blocks.id[b];
+}
+
+int64_t Interpreter::block_index(int64_t id) const {
+  const std::vector<int>& ids = model_.dim == 3 ? model_.blocks3.id : model_.blocks.id;
+  const auto it = std::find(ids.begin(), ids.end(), id);
+  return it == ids.end() ? -1 : static_cast<int64_t>(it - ids.begin());
+}
+
 // The block holding a point (X,Y or X,Y,Z), or else the one whose surface is nearest within
 // the contact tolerance (a point on a face or edge, as on the top of a column).
 size_t Interpreter::block_at(const std::string& v) const {
@@ -342,10 +355,12 @@ std::vector<size_t> Interpreter::select(Args& a, bool allow_words) {
   if (take(a, "block", v)) {
     for (const auto& part : split_top_level(v)) {
       const int64_t id = integer(part, 1);
-      if (id > static_cast<int64_t>(model_.block_count()))
+      const int64_t b = block_index(id);
+      if (b < 0)
         fail("there is no block " + std::to_string(id) + " (the model has " +
-             std::to_string(model_.block_count()) + ")");
-      ids.push_back(static_cast<size_t>(id - 1));
+             std::to_string(model_.block_count()) +
+             " blocks; deleted blocks' numbers are not used again)");
+      ids.push_back(static_cast<size_t>(b));
     }
     any = true;
   }

@@ -251,6 +251,9 @@ class Interpreter {
   std::vector<size_t> select(Args& a, bool allow_words = false);
   // The block holding the point X,Y (X,Y,Z), or the nearest within the contact tolerance.
   size_t block_at(const std::string& text) const;
+  // A block's number as users see it, and the index of the block with a number (-1: none).
+  int block_id(size_t b) const;
+  int64_t block_index(int64_t id) const;
   std::string resolve(const std::string& path, bool for_reading) const;
   void run_with_progress(const std::function<bool(const Progress&)>& body, const std::string& what);
   void check_ready();
