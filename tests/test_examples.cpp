@@ -794,6 +794,40 @@ class TestExamples : public QObject {
     qInfo("zdisp figure: %ld blue and %ld red of %ld samples", blue, red, samples);
     QVERIFY(blue > samples / 100 && red > samples / 10);
   }
+  // 3D cables: the wedge of rock_wedge, which slides out at 30 degrees of friction (0.9 m in a
+  // second, rockWedgeStandsThenSlidesAlongTheIntersection), held by four 500 kN cables within
+  // millimetres; each cable carries the shortfall in tension where it crosses the wedge's base,
+  // below its yield force, and the figure draws the cables over the rock, red at the crossing.
+  void cablesHoldTheRockWedgeIn3d() {
+    const Run r = run_example("rock_wedge_cabled", {}, dir_);
+    QCOMPARE(r.exit_code, 0);
+    auto h = read_history(r.dir);
+    const double settled = -h["wedge_z"].back(), axial = h["cable_at_joint"].back();
+    qInfo("wedge settles %.4g mm; cable force at the wedge's base %.4g kN", 1e3 * settled,
+          1e-3 * axial);
+    // It came to rest, with no warning (the solve reached its ratio).
+    QVERIFY(read_summary(r.dir)["final_ratio"].toDouble() <= 1e-5);
+    QVERIFY(read_summary(r.dir)["warnings"].toArray().isEmpty());
+    QVERIFY(settled > 0.0 && settled < 0.03);
+    QVERIFY(axial > 2e5 && axial < 5e5);  // in tension, below the yield force
+    QString why;
+    QVERIFY2(check_vtp(r.dir + "/vtk/support_0001.vtp", why) > 0, qPrintable(why));
+    const QString fig = r.dir + "/wedge_cables.png";
+    check_figure(fig, QSize(1200, 900));
+    // Drawn over the rock (which would hide them): reds at the crossings, and no purple (the
+    // state colour) when coloured by force.
+    const QImage img(fig);
+    long red = 0, purple = 0;
+    for (int py = 0; py < img.height(); ++py)
+      for (int px = 0; px < img.width() * 3 / 4; ++px) {
+        const QColor c = img.pixelColor(px, py);
+        red += c.red() > 190 && c.green() < 60 && c.blue() < 60;
+        purple += c.red() > 140 && c.green() < 40 && c.blue() > 140;
+      }
+    qInfo("cable figure: %ld red pixels, %ld purple", red, purple);
+    QVERIFY(red > 20);
+    QCOMPARE(purple, 0L);
+  }
   // 10-node zones in a script: the cantilever's free end deflects as Timoshenko's beam within
   // 2% (-0.8%); the zones go to ParaView as quadratic tetrahedra (cell type 24, ten nodes
   // each); the figure shows the bending stress, tension along the top at the root (red end of
@@ -878,13 +912,23 @@ class TestExamples : public QObject {
     QVERIFY(yielded > 500);
   }
   void everyExampleIsChecked() {
-    const QStringList checked{
-        "block_on_incline.tess",      "brick_wall.tess",        "brick_wall_3d.tess",
-        "cantilever_3d.tess",         "column_3d.tess",         "deformable_arch.tess",
-        "masonry_arch.tess",          "rock_slope.tess",        "rock_wedge.tess",
-        "toppling_stack.tess",        "tunnel_3d.tess",         "tunnel_bolted.tess",
-        "tunnel_cabled.tess",         "tunnel_deformable.tess", "tunnel_jointed.tess",
-        "tunnel_support_compare.tess"};
+    const QStringList checked{"block_on_incline.tess",
+                              "brick_wall.tess",
+                              "brick_wall_3d.tess",
+                              "cantilever_3d.tess",
+                              "column_3d.tess",
+                              "deformable_arch.tess",
+                              "masonry_arch.tess",
+                              "rock_slope.tess",
+                              "rock_wedge.tess",
+                              "rock_wedge_cabled.tess",
+                              "toppling_stack.tess",
+                              "tunnel_3d.tess",
+                              "tunnel_bolted.tess",
+                              "tunnel_cabled.tess",
+                              "tunnel_deformable.tess",
+                              "tunnel_jointed.tess",
+                              "tunnel_support_compare.tess"};
     QStringList found = QDir(TESSERA_EXAMPLES).entryList({"*.tess"}, QDir::Files, QDir::Name);
     QCOMPARE(found, checked);
   }
