@@ -202,7 +202,7 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t b : blocks) doomed[b] = 1;
   const std::vector<uint32_t> old_face = B.face_begin;
-  drop_deformable3(m, doomed);
+  const std::vector<int64_t> node_map = drop_deformable3(m, doomed);
   const std::vector<int> map = B.remove(doomed);
   // Contacts between blocks that stay, renumbered (their order is kept, so they stay sorted).
   std::vector<Contact3> kept;
@@ -228,7 +228,7 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
   for (size_t b = 0; b < map.size() && m.det_pos3.size() == map.size(); ++b)
     if (map[b] >= 0) pos.push_back(m.det_pos3[b]), q.push_back(m.det_q3[b]);
   m.det_pos3 = std::move(pos), m.det_q3 = std::move(q);
-  remap_cables3(m, map);
+  remap_cables3(m, map, node_map);
   for (auto& s : m.histories.series)
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;

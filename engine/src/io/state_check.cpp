@@ -290,6 +290,8 @@ void check_rest(Checker& c, const Model& m) {
   check_cables(m.cables, anchor_ok);
   check_cables(m.cables3, [&](const Anchor3& a) {
     const auto n3 = int64_t(m.blocks3.size());
+    for (int32_t n : a.node)
+      if (a.node[0] >= 0 && (n < 0 || size_t(n) >= m.continuum3.node_count())) return false;
     return a.block >= 0 && a.block < n3 && a.body >= 0 && a.body < n3 &&
            m.blocks3.master[size_t(a.block)] == a.body;
   });

@@ -100,10 +100,6 @@ size_t install_cable3(Model& m, const std::string& name, const Vec3& p0, const V
       m, m.cables3, name, p0, p1, segments, props, free, head,
       [&](const Vec3& p) {
         const int b = block3_at(m, p, m.tolerance());
-        if (b >= 0 && m.blocks3.deformable[static_cast<size_t>(b)])
-          throw ModelError("cable '" + name + "': block " +
-                           std::to_string(m.blocks3.id[static_cast<size_t>(b)]) +
-                           " is deformable; 3D cables are anchored in rigid blocks only");
         return b < 0 ? Anchor3{} : make_anchor3(m, static_cast<size_t>(b), p);
       },
       [&](const Vec3& p) { return block3_at(m, p, 0.0) >= 0; });
@@ -171,11 +167,16 @@ void remap_cables(Model& m, const std::vector<int>& map, const std::vector<int64
   });
 }
 
-void remap_cables3(Model& m, const std::vector<int>& map) {
+void remap_cables3(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map) {
   remap_nodes(m, m.cables3, [&](Anchor3& a) {
     if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
     if (map[static_cast<size_t>(a.body)] < 0) return false;
     a.block = map[static_cast<size_t>(a.block)], a.body = map[static_cast<size_t>(a.body)];
+    if (a.node[0] >= 0 && !node_map.empty())
+      for (auto& nd : a.node) {
+        if (node_map[static_cast<size_t>(nd)] < 0) return false;
+        nd = static_cast<int32_t>(node_map[static_cast<size_t>(nd)]);
+      }
     return true;
   });
 }

@@ -169,6 +169,7 @@ void add_cable_forces3(Model& m) {
   const Cables3& K = m.cables3;
   // In node order, onto the body (the master of a concave block's pieces).
   for (size_t i = 0; i < K.size(); ++i) {
+    if (K.host[i].node[0] >= 0) continue;  // in a zone: add_cable_forces_to_nodes3
     const auto b = static_cast<size_t>(K.host[i].body);
     const Vec3 f = K.host_force[i];
     B.force[b] += f, B.torque[b] += (K.pos[i] - B.body[b].position).cross(f);
@@ -180,7 +181,7 @@ std::vector<double> cable_stiffness3(const Model& m) {
   const Cables3& K = m.cables3;
   std::vector<double> k(m.blocks3.size(), 0.0);
   for (size_t i = 0; i < K.size(); ++i)
-    k[static_cast<size_t>(K.host[i].body)] += cable_host_stiffness(K, i);
+    if (K.host[i].node[0] < 0) k[static_cast<size_t>(K.host[i].body)] += cable_host_stiffness(K, i);
   return k;
 }
 

@@ -171,11 +171,40 @@ void add_contact_forces_to_nodes3(Model& m) {
   }
 }
 
+namespace {
+// Nodes of zones that host cables: their weight's share of the grout (or a tied head's segment).
+void cable_node_limits(const Model& m, std::vector<double>& dt) {
+  const Continuum3& c = m.continuum3;
+  const Cables3& K = m.cables3;
+  for (size_t i = 0; i < K.size(); ++i) {
+    const Anchor3& a = K.host[i];
+    const double kc = cable_host_stiffness(K, i);
+    for (int k = 0; a.node[0] >= 0 && k < 4; ++k) {
+      const auto n = static_cast<size_t>(a.node[k]);
+      if (c.mass[n] > 0 && a.w[k] * kc > 0)
+        dt[n] = std::min(dt[n], std::sqrt(c.mass[n] / (a.w[k] * kc)));
+    }
+  }
+}
+}  // namespace
+
+void add_cable_forces_to_nodes3(Model& m) {
+  Continuum3& c = m.continuum3;
+  const Cables3& K = m.cables3;
+  // In node order, by the weights of the zone's corners.
+  for (size_t i = 0; i < K.size(); ++i) {
+    const Anchor3& a = K.host[i];
+    for (int k = 0; a.node[0] >= 0 && k < 4; ++k)
+      add_node_force(c, static_cast<size_t>(a.node[k]), Vec3(a.w[k] * K.host_force[i]));
+  }
+}
+
 std::vector<double> node_timesteps3(const Model& m) {
   const Continuum3& c = m.continuum3;
   std::vector<double> dt = node_steps(c);
   // Surface nodes: their share of each surface triangle around them (a third; on a quadratic
   // zone's face, the mid-edge nodes' parts: traction_shares), as 2D's half of each edge.
+  cable_node_limits(m, dt);
   const double kmax = stiffest_joint_pair(m);
   if (kmax <= 0) return dt;
   std::vector<double> share(c.node_count(), 0.0);
@@ -190,7 +219,7 @@ std::vector<double> node_timesteps3(const Model& m) {
   return dt;
 }
 
-void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
+std::vector<int64_t> drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
   Blocks3& B = m.blocks3;
   Continuum3& c = m.continuum3;
   std::vector<int64_t> node_map(c.node_count()), zone_map(c.zone_count());
@@ -203,7 +232,7 @@ void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
       for (uint32_t n = B.node_begin[b]; n < B.node_end[b]; ++n) node_map[n] = -1;
       for (uint32_t z = B.zone_begin[b]; z < B.zone_end[b]; ++z) zone_map[z] = -1;
     }
-  if (!any) return;
+  if (!any) return {};
   int64_t next = 0;
   for (auto& k : node_map)
     if (k >= 0) k = next++;
@@ -260,6 +289,7 @@ void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed) {
     if (s.zone >= 0 && static_cast<size_t>(s.zone) < zone_map.size())
       s.zone = static_cast<int32_t>(zone_map[static_cast<size_t>(s.zone)]);
   m.det_node3.clear();
+  return node_map;
 }
 
 }  // namespace tessera

@@ -29,6 +29,7 @@ ZoneMotion step_zones(Model& m, ContinuumT<D>& zc, const typename ContinuumT<D>:
     add_reinforcement_forces_to_nodes(m);
   } else {
     add_contact_forces_to_nodes3(m);
+    add_cable_forces_to_nodes3(m);
   }
   const double node_move = move_nodes(zc);
   if constexpr (D == 2) {

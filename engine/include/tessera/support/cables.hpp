@@ -97,9 +97,9 @@ std::vector<double> cable_node_steps(const Model& m);
 // After blocks are deleted (see remap_reinforcement): nodes in excavated rock go, and a cable
 // goes on as its runs of nodes left in rock.
 void remap_cables(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map);
-void remap_cables3(Model& m, const std::vector<int>& map);
-// 3D: each node's pull on its rigid host (force and torque about the body's centroid), and the
-// grout stiffness each body carries (for the time step).
+void remap_cables3(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map);
+// 3D: each node's pull on its rigid host (force and torque about the body's centroid; nodes in
+// zones: add_cable_forces_to_nodes3), and the grout stiffness each body carries (time step).
 void add_cable_forces3(Model& m);
 std::vector<double> cable_stiffness3(const Model& m);
 

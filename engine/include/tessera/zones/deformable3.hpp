@@ -35,10 +35,13 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge,
 void update_deformable_world3(Model& m);
 // Adds the sub-contact forces on deformable 3D blocks to their nodes, in a fixed order per block.
 void add_contact_forces_to_nodes3(Model& m);
+// Adds the pull of cable nodes hosted in zones to the zones' corner nodes, by weight.
+void add_cable_forces_to_nodes3(Model& m);
 // Each node's own stable step (1e300 for a massless node): its zones' (node_steps), and for a
 // surface node its mass against the stiffest joint pair over its share of the surface.
 std::vector<double> node_timesteps3(const Model& m);
-// Drops the nodes and zones of the doomed blocks (before Blocks3::remove with the same flags).
-void drop_deformable3(Model& m, const std::vector<uint8_t>& doomed);
+// Drops the nodes and zones of the doomed blocks (before Blocks3::remove with the same flags);
+// returns each old node's new index (-1: gone), or nothing if no node went.
+std::vector<int64_t> drop_deformable3(Model& m, const std::vector<uint8_t>& doomed);
 
 }  // namespace tessera
