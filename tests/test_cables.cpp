@@ -288,65 +288,52 @@ class TestCables : public QObject {
     r.run("step 10\ndelete group=rock");
     QCOMPARE(r.model().cables3.size(), size_t(0));
   }
-  // 3D models refuse what is 2D only, and name a node in the air by its three coordinates.
-  void badCablesIn3dAreNamed_data() {
-    QTest::addColumn<QString>("line");
-    QTest::addColumn<QString>("message");
-    QTest::newRow("pattern") << "cable pattern joints=j spacing=1 length=3 segments=3 ea=1e8 "
-                                "kbond=1e8 sbond=0"
-                             << "place 3D cables one by one";
-    QTest::newRow("row spacing") << "cable 1,0,0 4,0,0 segments=3 ea=1e8 kbond=1e8 sbond=0 "
-                                    "rowspacing=2"
-                                 << "rowspacing= is for 2D";
-    QTest::newRow("2D points") << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0"
-                               << "x,y,z";
-    QTest::newRow("node in the air") << "cable 1,0,0 8,0,0 segments=7 ea=1e8 kbond=1e8 sbond=0"
-                                     << "node 5 at (5, 0, 0)";
-  }
-  void badCablesIn3dAreNamed() {
-    QFETCH(QString, line);
-    QFETCH(QString, message);
-    ScriptRun r;
-    r.run(pulled3(""));
-    QString error;
-    try {
-      r.run(line.toStdString());
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    QVERIFY2(error.contains(message), qPrintable(error));
-    QCOMPARE(r.model().cables3.cables.size(), size_t(1));
-  }
-  // Bad input names the cable and what is wrong.
+  // Bad input names the cable and what is wrong; 3D models refuse what is 2D only and name a
+  // node in the air by its three coordinates.
   void badCablesAreNamed_data() {
+    QTest::addColumn<int>("dim");
     QTest::addColumn<QString>("line");
     QTest::addColumn<QString>("message");
-    QTest::newRow("no segments") << "cable 1,0 4,0 ea=1e8 kbond=1e8 sbond=0"
+    QTest::newRow("no segments") << 2 << "cable 1,0 4,0 ea=1e8 kbond=1e8 sbond=0"
                                  << "segments";
-    QTest::newRow("no stiffness") << "cable 1,0 4,0 segments=3 kbond=1e8 sbond=0"
+    QTest::newRow("no stiffness") << 2 << "cable 1,0 4,0 segments=3 kbond=1e8 sbond=0"
                                   << "ea";
     QTest::newRow("node in the air")
-        << "cable 1,0 8,0 segments=7 ea=1e8 kbond=1e8 sbond=0 name=long"
+        << 2 << "cable 1,0 8,0 segments=7 ea=1e8 kbond=1e8 sbond=0 name=long"
         << "node 5 at (5, 0)";
-    QTest::newRow("taken name") << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 name=c"
+    QTest::newRow("taken name") << 2 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 name=c"
                                 << "exists already";
     QTest::newRow("pretension above yield")
-        << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 tension=1e4 pretension=2e4"
+        << 2 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 tension=1e4 pretension=2e4"
         << "pretension";
+    QTest::newRow("3D pattern") << 3
+                                << "cable pattern joints=j spacing=1 length=3 segments=3 ea=1e8 "
+                                   "kbond=1e8 sbond=0"
+                                << "place 3D cables one by one";
+    QTest::newRow("3D row spacing") << 3
+                                    << "cable 1,0,0 4,0,0 segments=3 ea=1e8 kbond=1e8 sbond=0 "
+                                       "rowspacing=2"
+                                    << "rowspacing= is for 2D";
+    QTest::newRow("3D given 2D points") << 3 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0"
+                                        << "x,y,z";
+    QTest::newRow("3D node in the air")
+        << 3 << "cable 1,0,0 8,0,0 segments=7 ea=1e8 kbond=1e8 sbond=0"
+        << "node 5 at (5, 0, 0)";
   }
   void badCablesAreNamed() {
+    QFETCH(int, dim);
     QFETCH(QString, line);
     QFETCH(QString, message);
-    ScriptRun r;
-    r.run(pulled(""));
+    PullOut run(dim, "");
     QString error;
     try {
-      r.run(line.toStdString());
+      run.r.run(line.toStdString());
     } catch (const std::exception& e) {
       error = e.what();
     }
     QVERIFY2(error.contains(message), qPrintable(error));
-    QCOMPARE(r.model().cables.cables.size(), size_t(1));  // nothing half placed
+    // Nothing half placed.
+    run.with_cables([](const auto& K) { QCOMPARE(K.cables.size(), size_t(1)); });
   }
 };
 

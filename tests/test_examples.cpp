@@ -78,6 +78,19 @@ std::pair<long, long> purple_left_right(const QImage& img) {
   return {left, right};
 }
 
+// Pixels of a figure's plot (left of the legend, at 3/4 of the width) at the top of the force
+// ramp (red) and in the support's elastic colour (purple).
+std::pair<long, long> red_purple(const QImage& img) {
+  long red = 0, purple = 0;
+  for (int py = 0; py < img.height(); ++py)
+    for (int px = 0; px < img.width() * 3 / 4; ++px) {
+      const QColor c = img.pixelColor(px, py);
+      red += c.red() > 190 && c.green() < 60 && c.blue() < 60;
+      purple += c.red() > 140 && c.green() < 40 && c.blue() > 140;
+    }
+  return {red, purple};
+}
+
 void check_figure(const QString& path, QSize size) {
   QVERIFY2(QFile::exists(path), qPrintable(path));
   QImage img;
@@ -458,14 +471,7 @@ class TestExamples : public QObject {
     // Coloured by axial force over the crown: the cables across the wedge's joints are red
     // (the top of the scale) where they cross, and none is drawn purple.
     check_figure(r.dir + "/tunnel_cabled_force.png", QSize(1600, 900));
-    const QImage force(r.dir + "/tunnel_cabled_force.png");
-    long red = 0, purple = 0;
-    for (int py = 0; py < force.height(); ++py)
-      for (int px = 0; px < force.width() * 3 / 4; ++px) {
-        const QColor c = force.pixelColor(px, py);
-        red += c.red() > 190 && c.green() < 60 && c.blue() < 60;
-        purple += c.red() > 140 && c.green() < 40 && c.blue() > 140;
-      }
+    const auto [red, purple] = red_purple(QImage(r.dir + "/tunnel_cabled_force.png"));
     qInfo("force figure: %ld red pixels, %ld purple", red, purple);
     QVERIFY(red > 100);
     QCOMPARE(purple, 0L);
@@ -816,14 +822,7 @@ class TestExamples : public QObject {
     check_figure(fig, QSize(1200, 900));
     // Drawn over the rock (which would hide them): reds at the crossings, and no purple (the
     // state colour) when coloured by force.
-    const QImage img(fig);
-    long red = 0, purple = 0;
-    for (int py = 0; py < img.height(); ++py)
-      for (int px = 0; px < img.width() * 3 / 4; ++px) {
-        const QColor c = img.pixelColor(px, py);
-        red += c.red() > 190 && c.green() < 60 && c.blue() < 60;
-        purple += c.red() > 140 && c.green() < 40 && c.blue() > 140;
-      }
+    const auto [red, purple] = red_purple(QImage(fig));
     qInfo("cable figure: %ld red pixels, %ld purple", red, purple);
     QVERIFY(red > 20);
     QCOMPARE(purple, 0L);

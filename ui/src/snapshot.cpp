@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 #include <tuple>
+#include <type_traits>
 
 #include "tessera/core/model.hpp"
 #include "tessera/script/script.hpp"
@@ -315,33 +316,25 @@ void copy_bolts(const Model& m, Snapshot& s) {
     }
     s.bolts.push_back(std::move(o));
   }
-  const Cables& K = m.cables;
-  for (const Cable& c : K.cables) {
-    SnapshotBolt o;
-    o.name = c.name, o.cable = true;
-    for (uint32_t i = c.first; i < c.first + c.count; ++i) {
-      o.points.push_back(K.pos[i]);
-      o.block.push_back(K.host[i].block);
-      o.axial.push_back(K.axial[i]);
-      o.shear.push_back(0.0);
-      o.state.push_back(K.state[i] ? kBoltAxialYield : 0);
+  // Cables of either dimension: their nodes (and in 3D the nodes' 3D points).
+  auto copy_cables = [&](const auto& K) {
+    for (const Cable& c : K.cables) {
+      SnapshotBolt o;
+      o.name = c.name, o.cable = true;
+      for (uint32_t i = c.first; i < c.first + c.count; ++i) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(K)>, Cables3>)
+          o.points3.push_back(K.pos[i]);
+        o.points.push_back(K.pos[i].template head<2>());
+        o.block.push_back(K.host[i].block);
+        o.axial.push_back(K.axial[i]);
+        o.shear.push_back(0.0);
+        o.state.push_back(K.state[i] ? kBoltAxialYield : 0);
+      }
+      s.bolts.push_back(std::move(o));
     }
-    s.bolts.push_back(std::move(o));
-  }
-  const Cables3& K3 = m.cables3;
-  for (const Cable& c : K3.cables) {
-    SnapshotBolt o;
-    o.name = c.name, o.cable = true;
-    for (uint32_t i = c.first; i < c.first + c.count; ++i) {
-      o.points3.push_back(K3.pos[i]);
-      o.points.push_back(K3.pos[i].head<2>());
-      o.block.push_back(K3.host[i].block);
-      o.axial.push_back(K3.axial[i]);
-      o.shear.push_back(0.0);
-      o.state.push_back(K3.state[i] ? kBoltAxialYield : 0);
-    }
-    s.bolts.push_back(std::move(o));
-  }
+  };
+  copy_cables(m.cables);
+  copy_cables(m.cables3);
   const Liners& L = m.liners;
   for (const Liner& l : L.liners) {
     SnapshotBolt o;
