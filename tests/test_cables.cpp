@@ -213,6 +213,40 @@ class TestCables : public QObject {
     qInfo("plate turned %.3g rad", turned);
     QVERIFY(turned < 1e-3);
   }
+  // The bond strength rising with confinement (FLAC's sfriction and perimeter): the rock zoned,
+  // held at every node under an in-situ stress of 1 MPa all round, so each node's grout has the
+  // strength sbond + 1e6 tan(30) perimeter per metre; pulled out, the force settles at that
+  // times the bonded length, 3.1e5 N rather than the 8e4 N of sbond alone.
+  void confinementRaisesTheBondStrength() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define rock density=2500 E=1e10 nu=0.25\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "block 0.5,-1 4.5,-1 4.5,1 0.5,1 material=rock group=rock\n"
+        "block 0,-0.5 0.4,-0.5 0.4,0.5 0,0.5 material=rock group=plate\n"
+        "zone generate edge=0.5 group=rock\nboundary fix=xy x=0.45,4.55\n"
+        "insitu stress=-1e6,-1e6,0 szz=-1e6\n"
+        "cable 0.4,0 4.5,0 segments=41 ea=1e8 kbond=1e8 sbond=2e4 sfriction=30 perimeter=0.1 "
+        "head=on name=c\n"
+        "fix group=plate\nvelocity group=plate vx=-0.1\nstep 3000\n"
+        "velocity group=plate vx=0\nstep 2000");
+    const Cables& K = r.model().cables;
+    const double capacity = (2e4 + 1e6 * std::tan(M_PI / 6) * 0.1) * kL;
+    qInfo("force at pull-out %.6g N (closed form %.6g)", K.axial[0], capacity);
+    QVERIFY(std::abs(K.axial[0] - capacity) < 1e-3 * capacity);
+    // Every bonded node's grout at the confined strength.
+    const double strength = capacity / kL;
+    for (uint32_t i = kFace; i < K.size(); ++i)
+      QVERIFY2(std::abs(K.bond[i] - strength) < 1e-6 * strength,
+               qPrintable(QString("node %1: bond %2 N/m").arg(i).arg(K.bond[i])));
+    // In a rigid block there is no confinement: sbond alone.
+    ScriptRun rigid;
+    rigid.run(
+        pulled("fix group=plate\nvelocity group=plate vx=-0.1\nstep 3000\n"
+               "velocity group=plate vx=0\nstep 2000",
+               " sfriction=30 perimeter=0.1"));
+    QVERIFY(std::abs(rigid.model().cables.axial[0] - 2e4 * kL) < 1e-3 * 2e4 * kL);
+  }
   // A cable tensioned against its faceplate: the plate presses the rock with the pretension,
   // less what the cable gives back as it shortens, and the grout beyond the free length holds it.
   void pretensionHeldByTheGrout() {

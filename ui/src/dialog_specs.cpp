@@ -15,12 +15,15 @@ std::vector<CommandField> cable_fields(bool three) {
       {"tension", "Yield force in tension", "N", "5e5", "empty: none"},
       {"kbond", "Grout shear stiffness", "N/m/m", "1e8", "per metre of cable"},
       {"sbond", "Grout bond strength", "N/m", "2e5", "per metre of cable; 0: none"},
+      {"sfriction", "Grout friction angle", "deg", "",
+       "bond strength rising with confinement (zones)"},
+      {"perimeter", "Grout perimeter", "m", "", "with the friction angle"},
       {"pretension", "Pretension", "N", "", "empty: none"},
       {"free", "Free (unbonded) length", "m", "", "from the head"},
       {"head", "Faceplate at the head", "", "off", "on: tied to the rock"},
       {"rowspacing", "Row spacing (out of plane)", "m", "1", ""},
       {"name", "Name", "", "", "for histories"}};
-  if (three) f.erase(f.begin() + 8);
+  if (three) std::erase_if(f, [](const CommandField& c) { return c.key == "rowspacing"; });
   return f;
 }
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "tessera/generation/generators.hpp"
 #include "tessera/script/script.hpp"
@@ -98,6 +99,15 @@ CableProperties Interpreter::cable_properties(Args& a) {
   take_num(a, "compression", p.compression);
   take_num(a, "pretension", p.pretension);
   take_num(a, "mass", p.mass);
+  // Bond strength rising with confinement (in zones): friction angle and grout perimeter.
+  double friction = 0.0;
+  if (take_num(a, "sfriction", friction)) {
+    if (!(friction >= 0.0 && friction < 90.0))
+      fail("a cable's sfriction (the grout's friction angle) must be from 0 to 90 degrees");
+    if (!take_num(a, "perimeter", p.perimeter) || !(p.perimeter > 0.0))
+      fail("a cable with sfriction needs perimeter=P, the grout's perimeter (m, positive)");
+    p.bond_friction = std::tan(friction * std::numbers::pi / 180.0);
+  }
   double row = 1.0;
   if (take_num(a, "rowspacing", row) && model_.dim == 3)
     fail("rowspacing= is for 2D models (a slice 1 m thick); a 3D cable is one cable");
@@ -109,7 +119,8 @@ CableProperties Interpreter::cable_properties(Args& a) {
     fail("a cable's pretension cannot exceed its tensile yield force");
   if (!(row > 0.0)) fail("the cables' row spacing must be positive");
   // A 2D model is a slice 1 m thick: rows `row` apart act as 1/row of a cable.
-  for (double* v : {&p.ea, &p.tension, &p.compression, &p.kbond, &p.sbond, &p.pretension, &p.mass})
+  for (double* v : {&p.ea, &p.tension, &p.compression, &p.kbond, &p.sbond, &p.pretension, &p.mass,
+                    &p.perimeter})
     *v /= row;
   return p;
 }

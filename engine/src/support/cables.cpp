@@ -46,8 +46,48 @@ void node_axes(const Model& m, CablesT<D>& K, const Cable& c,
   }
 }
 
+// The grout's confinement at node i (compression positive): the mean of the normal stresses
+// across the cable's axis t in the zone that hosts the node (in 2D the in-plane normal and the
+// out-of-plane stress); zero in a rigid block, which carries no stress.
+template <int D>
+double confinement(const Model& m, CablesT<D>& K, size_t i, const typename CablesT<D>::V& t) {
+  const auto& a = K.host[i];
+  if (a.node[0] < 0) return 0.0;
+  const ContinuumT<D>& c = [&]() -> const ContinuumT<D>& {
+    if constexpr (D == 3)
+      return m.continuum3;
+    else
+      return m.continuum;
+  }();
+  const auto hosts = [&](int32_t z) {
+    if (z < 0 || static_cast<size_t>(z) >= c.zone_count()) return false;
+    for (int k = 0; k <= D; ++k)
+      if (c.zones[static_cast<size_t>(z)][static_cast<size_t>(k)] !=
+          static_cast<uint32_t>(a.node[k]))
+        return false;
+    return true;
+  };
+  int32_t& z = K.zone[i];
+  if (!hosts(z)) {
+    z = -1;
+    for (size_t k = 0; k < c.zone_count() && z < 0; ++k)
+      if (hosts(static_cast<int32_t>(k))) z = static_cast<int32_t>(k);
+  }
+  if (z < 0) return 0.0;
+  const ZoneStress& s = c.stress[static_cast<size_t>(z)];
+  if constexpr (D == 2) {
+    const double nx = -t.y(), ny = t.x();
+    return -0.5 * (s.xx * nx * nx + 2.0 * s.xy * nx * ny + s.yy * ny * ny + s.zz);
+  } else {
+    Eigen::Matrix3d S;
+    S << s.xx, s.xy, s.xz, s.xy, s.yy, s.yz, s.xz, s.yz, s.zz;
+    return -0.5 * (S.trace() - t.dot(S * t));
+  }
+}
+
 template <int D>
 void update(Model& m, CablesT<D>& K, double alpha) {
+  if (K.zone.size() != K.size()) K.zone.assign(K.size(), -1);
   using V = typename CablesT<D>::V;
   const double dt = m.dt;
   std::vector<V> h;
@@ -82,11 +122,16 @@ void update(Model& m, CablesT<D>& K, double alpha) {
         K.vel[i] = vh.dot(t), K.host_force[i] = f, K.bond[i] = 0.0;
         continue;
       }
-      // The grout: elastic slip, capped at the bond strength.
+      // The grout: elastic slip, capped at the bond strength (rising with confinement).
       double s = p.kbond * (K.slip[i] - K.slip_plastic[i]);
       K.state[i] &= static_cast<uint8_t>(~kCableBondYield);
-      if (p.sbond > 0.0 && std::abs(s) >= p.sbond * (1.0 - 1e-12) && K.bonded[i] > 0.0) {
-        s = std::copysign(p.sbond, s);
+      const bool limited = p.sbond > 0.0 || p.bond_friction > 0.0;
+      const double strength =
+          p.bond_friction > 0.0
+              ? std::max(0.0, p.sbond + p.bond_friction * p.perimeter * confinement(m, K, i, t))
+              : p.sbond;
+      if (limited && std::abs(s) >= strength * (1.0 - 1e-12) && K.bonded[i] > 0.0) {
+        s = std::copysign(strength, s);
         K.slip_plastic[i] = K.slip[i] - s / p.kbond;
         K.state[i] |= kCableBondYield;
       }

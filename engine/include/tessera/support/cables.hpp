@@ -31,6 +31,10 @@ struct CableProperties {
   double sbond = 0.0;                       // grout bond strength, N per m of cable (0: none)
   double pretension = 0.0;                  // axial force when installed, N
   double mass = 0.0;  // steel per metre of cable, kg/m (0: steel of the section EA implies)
+  // The bond strength's rise with confinement (FLAC's sfriction and perimeter): tan of the
+  // grout's friction angle (0: none) and the grout's perimeter, m, so that the strength per
+  // metre is sbond + confinement * tan * perimeter.
+  double bond_friction = 0.0, perimeter = 0.0;
 };
 
 struct Cable {
@@ -72,6 +76,8 @@ struct CablesT {
   std::vector<double> rest, plastic, axial;
   // The cycle's results: node positions, axes and the force each node hands its host.
   std::vector<V> pos, axis, host_force;
+  // Per node, the zone that hosts it (a cache for the confinement, found again when stale).
+  std::vector<int32_t> zone;
 
   size_t size() const { return cable.size(); }
   bool empty() const { return cables.empty(); }
