@@ -319,6 +319,34 @@ class TestDeformable3 : public QObject {
     for (const Vec3& p : m.continuum3.pos) QVERIFY(p.z() < 1.01);
   }
 
+  // `fix` and `free` act on a deformable block's nodes, and zoning a fixed block holds them as
+  // the block was held: under gravity it stays put, freed it falls, fixed and stopped it stays.
+  void fixHoldsADeformableBlocksNodes() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\nmaterial define rock density=2500 E=10e9 nu=0.25\n"
+        "block box 0,0,0 1,1,1 material=rock\nfix all\nzone generate edge=0.5\n"
+        "gravity 0 0 -10\ndamping none\nstep 100");
+    const Continuum3& c = r.model().continuum3;
+    const auto lowest = [&] {
+      double z = 1e300;
+      for (const Vec3& p : c.pos) z = std::min(z, p.z());
+      return z;
+    };
+    QVERIFY(r.log.find("nodes of 1 fixed block(s) are held") != std::string::npos);
+    QCOMPARE(lowest(), 0.0);
+    r.run("free all\nstep 1000");
+    // Free fall: g t^2 / 2 over the 1,000 steps (to the step's first-order start).
+    const double fallen = lowest(), t = 1000 * r.model().dt;
+    qInfo("fell %.4g m in %.4g s (free fall %.4g m)", fallen, t, -5.0 * t * t);
+    QVERIFY(std::abs(fallen + 5.0 * t * t) < 0.01 * 5.0 * t * t);
+    r.run("fix all\nvelocity all vz=0\nstep 10");
+    const double stopped = lowest();
+    r.run("step 100");
+    qInfo("fell %.3g m, then held", fallen);
+    QCOMPARE(lowest(), stopped);
+  }
+
   // CGAL's mesher can leave a flat zone on a block's surface (four nodes on one face). The
   // Salencon slab zoned at 0.2 a had one on the opening's wall (19,073 zones, smallest dihedral
   // angle 0.000 degrees): its nodes had no stable step, froze under density scaling, and the

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "support.hpp"
 
@@ -549,13 +550,7 @@ class TestExamples : public QObject {
     const QString figures[2] = {"/unsupported.png", "/bolted.png"};
     for (int i = 0; i < 2; ++i) {
       check_figure(r.dir + figures[i], QSize(1600, 1200));
-      const QImage img(r.dir + figures[i]);
-      for (int py = 0; py < img.height(); ++py)
-        for (int px = 0; px < img.width() * 3 / 4; ++px) {
-          const QColor c = img.pixelColor(px, py);
-          red[i] += c.red() > 190 && c.green() < 60 && c.blue() < 60;
-          purple[i] += c.red() > 140 && c.green() < 40 && c.blue() > 140;
-        }
+      std::tie(red[i], purple[i]) = red_purple(QImage(r.dir + figures[i]));
     }
     qInfo("slipping (red) pixels: %ld unsupported, %ld bolted; bolt (purple) pixels: %ld, %ld",
           red[0], red[1], purple[0], purple[1]);

@@ -494,6 +494,14 @@ void Interpreter::cmd_fix(Args& a) {
   done(a);
   const uint8_t bits = fixity_words(a.words);
   for (size_t b : sel) {
+    // A deformable block moves with its nodes: they are held (at their velocity now).
+    if (model_.blocks.deformable[b]) {
+      if (!(bits & (kFixX | kFixY)))
+        fail("block " + std::to_string(model_.blocks.id[b]) +
+             " is deformable: its nodes have no rotation to fix (fix x, y or both)");
+      set_block_nodes(model_, b, bits & (kFixX | kFixY), false, nullptr);
+      continue;
+    }
     model_.blocks.fixity[b] |= bits;
     // A degree of freedom is held at the velocity it has now unless 'velocity' says otherwise.
     if (bits & kFixX) model_.blocks.fixed_vx[b] = model_.blocks.vx[b];
@@ -507,8 +515,17 @@ void Interpreter::cmd_free(Args& a) {
   const auto sel = select(a, true);
   done(a);
   const uint8_t bits = fixity_words(a.words);
-  auto& fixity = model_.dim == 3 ? model_.blocks3.fixity : model_.blocks.fixity;
-  for (size_t b : sel) fixity[b] &= static_cast<uint8_t>(~bits);
+  const bool three = model_.dim == 3;
+  auto& fixity = three ? model_.blocks3.fixity : model_.blocks.fixity;
+  const auto& deformable = three ? model_.blocks3.deformable : model_.blocks.deformable;
+  const uint8_t moves = three ? uint8_t(kFix3X | kFix3Y | kFix3Z) : uint8_t(kFixX | kFixY);
+  for (size_t b : sel) {
+    // A deformable block's nodes (its own fixity stays: its body does not move).
+    if (deformable[b])
+      set_block_nodes(model_, b, bits & moves, true, nullptr);
+    else
+      fixity[b] &= static_cast<uint8_t>(~bits);
+  }
   model_.touch();
 }
 
@@ -523,6 +540,15 @@ void Interpreter::cmd_velocity(Args& a) {
   // A free one starts from the velocity given.
   Blocks& B = model_.blocks;
   for (size_t b : sel) {
+    if (B.deformable[b]) {
+      // Its nodes: held ones take the velocity at the next step, free ones start with it.
+      if (hw && !hx && !hy)
+        fail("block " + std::to_string(B.id[b]) + " is deformable: give its nodes vx= or vy=");
+      const double v[2] = {vx, vy};
+      set_block_nodes(model_, b, 0, false, v,
+                      static_cast<uint8_t>((hx ? kFixX : 0) | (hy ? kFixY : 0)));
+      continue;
+    }
     const uint8_t fix = B.fixity[b];
     if (hx) B.fixed_vx[b] = vx, B.vx[b] = (fix & kFixX) ? B.vx[b] : vx;
     if (hy) B.fixed_vy[b] = vy, B.vy[b] = (fix & kFixY) ? B.vy[b] : vy;

@@ -9,6 +9,7 @@
 #include "tessera/generation/generators3.hpp"
 #include "tessera/script/expr.hpp"
 #include "tessera/script/script.hpp"
+#include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 
@@ -301,7 +302,16 @@ void Interpreter::cmd_fix3(Args& a) {
   done(a);
   const uint8_t bits = fixity_words(a.words);
   Blocks3& B = model_.blocks3;
+  const uint8_t moves = kFix3X | kFix3Y | kFix3Z;
   for (size_t b : sel) {
+    // A deformable block moves with its nodes: they are held (at their velocity now).
+    if (B.deformable[b]) {
+      if (!(bits & moves))
+        fail("block " + std::to_string(B.id[b]) +
+             " is deformable: its nodes have no rotation to fix (fix x, y, z or some of them)");
+      set_block_nodes(model_, b, bits & moves, false, nullptr);
+      continue;
+    }
     B.fixity[b] |= bits;
     // Held at the velocity it has now unless 'velocity' says otherwise.
     for (int k = 0; k < 3; ++k)
@@ -321,12 +331,18 @@ void Interpreter::cmd_velocity3(Args& a) {
   if (!has[0] && !has[1] && !has[2]) fail("'velocity' needs vx=, vy= or vz=");
   // As in 2D: a fixed component takes its new velocity at the next integration.
   Blocks3& B = model_.blocks3;
-  for (size_t b : sel)
+  for (size_t b : sel) {
+    if (B.deformable[b]) {
+      set_block_nodes(model_, b, 0, false, v,
+                      static_cast<uint8_t>((has[0] ? 1 : 0) | (has[1] ? 2 : 0) | (has[2] ? 4 : 0)));
+      continue;
+    }
     for (int k = 0; k < 3; ++k) {
       if (!has[k]) continue;
       B.fixed_v[b][k] = v[k];
       if (!(B.fixity[b] & (1 << k))) B.body[b].velocity[k] = v[k];
     }
+  }
 }
 
 void Interpreter::cmd_gravity3(Args& a) {

@@ -120,15 +120,25 @@ void Interpreter::cmd_zone(Args& a) {
     done(a);
     if (sel.empty())
       for (size_t b = 0; b < model_.block_count(); ++b) sel.push_back(b);
+    size_t fixed_blocks = 0;
+    const auto report_fixed = [&] {
+      if (fixed_blocks > 0)
+        log("zone: the nodes of " + std::to_string(fixed_blocks) +
+            " fixed block(s) are held as the block was");
+    };
     if (three) {
       Continuum3& c = model_.continuum3;
       const size_t before = c.zone_count();
       ZoningReport worst;
       for (size_t b : sel) {
         if (model_.blocks3.deformable[b]) continue;
+        // A fixed block's nodes are held as the block was (its translations, at its velocity).
+        const uint8_t held = model_.blocks3.fixity[b] & (kFix3X | kFix3Y | kFix3Z);
+        const Vec3 held_v = model_.blocks3.fixed_v[b];
         try {
           const ZoningReport r =
               make_deformable3(model_, b, edge, graded ? &grade3 : nullptr, stop_, order == 2);
+          if (held) set_block_nodes(model_, b, held, false, held_v.data()), ++fixed_blocks;
           if (r.min_dihedral < worst.min_dihedral)
             worst.min_dihedral = r.min_dihedral, worst.worst_at = r.worst_at;
           worst.poor += r.poor;
@@ -155,6 +165,7 @@ void Interpreter::cmd_zone(Args& a) {
             "): answers near such slivers are poor (a plastic zone's extent can be out by a "
             "third); a slightly different edge= or fine= usually avoids them");
       }
+      report_fixed();
       overlap_checked_ = false;
       return;
     }
@@ -162,8 +173,11 @@ void Interpreter::cmd_zone(Args& a) {
     const size_t before = c.zone_count();
     for (size_t b : sel) {
       if (model_.blocks.deformable[b]) continue;
+      const uint8_t held = model_.blocks.fixity[b] & (kFixX | kFixY);
+      const double held_v[2] = {model_.blocks.fixed_vx[b], model_.blocks.fixed_vy[b]};
       try {
         make_deformable(model_, b, edge, graded ? &grade : nullptr);
+        if (held) set_block_nodes(model_, b, held, false, held_v), ++fixed_blocks;
       } catch (const std::invalid_argument& e) {
         fail("block " + std::to_string(model_.blocks.id[b]) + ": " + e.what());
       }
@@ -179,6 +193,7 @@ void Interpreter::cmd_zone(Args& a) {
     log("zone: " + std::to_string(c.zone_count() - before) + " zones, " +
         std::to_string(c.node_count()) + " nodes in all; smallest zone angle " +
         std::to_string(worst).substr(0, 5) + " degrees");
+    report_fixed();
     overlap_checked_ = false;
   } else if (verb == "null") {
     // Excavation: zones whose centroid is in the box.

@@ -128,6 +128,50 @@ void update_deformable_world(Model& m) {
   }
 }
 
+namespace {
+template <int D>
+size_t set_nodes_of(ContinuumT<D>& c, const std::vector<size_t>& nodes, uint8_t bits, bool free,
+                    const double* velocity, uint8_t set_velocity) {
+  for (size_t n : nodes)
+    for (int k = 0; k < D; ++k) {
+      const uint8_t bit = node_fix_bit(k);
+      if (bits & bit) {
+        if (free) {
+          c.fixity[n] &= static_cast<uint8_t>(~bit);
+        } else {
+          c.fixity[n] |= bit;
+          c.fixed_vel[n][k] = velocity ? velocity[k] : c.vel[n][k];
+        }
+      }
+      // A prescribed velocity: held axes take it at the next step, free ones start with it.
+      if ((set_velocity & bit) && velocity) {
+        c.fixed_vel[n][k] = velocity[k];
+        if (!(c.fixity[n] & bit)) c.vel[n][k] = velocity[k];
+      }
+    }
+  return nodes.size();
+}
+}  // namespace
+
+size_t set_block_nodes(Model& m, size_t b, uint8_t bits, bool free, const double* velocity,
+                       uint8_t set_velocity) {
+  std::vector<size_t> nodes;
+  if (m.dim == 3) {
+    const Blocks3& B = m.blocks3;
+    // A joined body is one mesh: the nodes of every deformable piece of it.
+    for (size_t k = 0; k < B.size(); ++k)
+      if (B.master[k] == B.master[b] && B.deformable[k])
+        for (uint32_t n = B.node_begin[k]; n < B.node_end[k]; ++n) nodes.push_back(n);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return set_nodes_of(m.continuum3, nodes, bits, free, velocity, set_velocity);
+  }
+  const std::vector<int> owner = node_owners(m);
+  for (size_t n = 0; n < owner.size(); ++n)
+    if (owner[n] == static_cast<int>(b)) nodes.push_back(n);
+  return set_nodes_of(m.continuum, nodes, bits, free, velocity, set_velocity);
+}
+
 std::vector<int> node_owners(const Model& m) {
   const Blocks& B = m.blocks;
   const Continuum& c = m.continuum;

@@ -19,6 +19,12 @@ void sync_zone_materials(Model& m);
 void update_deformable_world(Model& m);
 // The block each node belongs to (-1 for none).
 std::vector<int> node_owners(const Model& m);
+// `fix`, `free` and `velocity` on a deformable block (2D or 3D), whose motion is its nodes':
+// holds (or frees) the translations `bits` (node_fix_bit per axis, as the blocks' kFixX...) of
+// its every node, at `velocity` (x, y[, z]; null: each node's velocity now). Sets the velocity of
+// the free nodes' axes in `set_velocity` (a velocity= of free nodes). Returns the node count.
+size_t set_block_nodes(Model& m, size_t b, uint8_t bits, bool free, const double* velocity,
+                       uint8_t set_velocity = 0);
 // Drops the nodes and zones of the doomed blocks (before Blocks::remove with the same flags);
 // returns each old node's new number (-1 dropped), or nothing if no node changed.
 std::vector<int64_t> drop_deformable(Model& m, const std::vector<uint8_t>& doomed);
