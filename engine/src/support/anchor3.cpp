@@ -1,10 +1,12 @@
-// Points fixed in rigid 3D blocks: where they are, how they move, and which block holds one.
+// Points fixed in 3D blocks (rigid bodies or zones): where they are, how they move, how they
+// follow a deletion, and which block holds one.
 #include "tessera/support/anchor3.hpp"
 
 #include <algorithm>
 
 #include "tessera/core/model.hpp"
 #include "tessera/core/step.hpp"
+#include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
 
@@ -64,6 +66,13 @@ Anchor3 make_anchor3(const Model& m, size_t b, const Vec3& p) {
   const Vec3 local = body.orientation.conjugate() * (p - body.position);
   a.local = {local.x(), local.y(), local.z()};
   return a;
+}
+
+bool follow_anchor(Anchor3& a, const std::vector<int>& map, const std::vector<int64_t>& node_map) {
+  if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
+  if (map[static_cast<size_t>(a.body)] < 0) return false;
+  a.block = map[static_cast<size_t>(a.block)], a.body = map[static_cast<size_t>(a.body)];
+  return renumber_nodes(a.node, node_map);
 }
 
 int block3_at(const Model& m, const Vec3& p, double tol) {

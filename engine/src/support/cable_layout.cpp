@@ -155,30 +155,11 @@ void remap_nodes(Model& m, CablesT<D>& K, Follow follow) {
 }  // namespace
 
 void remap_cables(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map) {
-  remap_nodes(m, m.cables, [&](Anchor2& a) {
-    if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
-    a.block = map[static_cast<size_t>(a.block)];
-    if (a.node[0] >= 0 && !node_map.empty())
-      for (auto& nd : a.node) {
-        if (node_map[static_cast<size_t>(nd)] < 0) return false;
-        nd = static_cast<int32_t>(node_map[static_cast<size_t>(nd)]);
-      }
-    return true;
-  });
+  remap_nodes(m, m.cables, [&](Anchor2& a) { return follow_anchor(a, map, node_map); });
 }
 
 void remap_cables3(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map) {
-  remap_nodes(m, m.cables3, [&](Anchor3& a) {
-    if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
-    if (map[static_cast<size_t>(a.body)] < 0) return false;
-    a.block = map[static_cast<size_t>(a.block)], a.body = map[static_cast<size_t>(a.body)];
-    if (a.node[0] >= 0 && !node_map.empty())
-      for (auto& nd : a.node) {
-        if (node_map[static_cast<size_t>(nd)] < 0) return false;
-        nd = static_cast<int32_t>(node_map[static_cast<size_t>(nd)]);
-      }
-    return true;
-  });
+  remap_nodes(m, m.cables3, [&](Anchor3& a) { return follow_anchor(a, map, node_map); });
 }
 
 }  // namespace tessera

@@ -75,14 +75,7 @@ void remap_liners(Model& m, const std::vector<int>& map, const std::vector<int64
     bool ok = true;
     for (uint32_t i = l.first; ok && i < l.first + l.count; ++i) {
       Anchor2 a = L.host[i];
-      ok = a.block >= 0 && map[static_cast<size_t>(a.block)] >= 0;
-      if (!ok) break;
-      a.block = map[static_cast<size_t>(a.block)];
-      if (a.node[0] >= 0 && !node_map.empty())
-        for (auto& nd : a.node) {
-          ok = ok && node_map[static_cast<size_t>(nd)] >= 0;
-          if (ok) nd = static_cast<int32_t>(node_map[static_cast<size_t>(nd)]);
-        }
+      ok = follow_anchor(a, map, node_map);
       hosts.push_back(a);
     }
     if (!ok) continue;

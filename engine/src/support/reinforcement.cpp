@@ -231,21 +231,17 @@ std::vector<double> reinforcement_stiffness(const Model& m) {
   return k;
 }
 
+bool follow_anchor(Anchor2& a, const std::vector<int>& map, const std::vector<int64_t>& node_map) {
+  if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
+  a.block = map[static_cast<size_t>(a.block)];
+  return renumber_nodes(a.node, node_map);
+}
+
 void remap_reinforcement(Model& m, const std::vector<int>& map,
                          const std::vector<int64_t>& node_map) {
   Reinforcement& R = m.support;
   if (R.empty()) return;
-  // An anchor follows its block and nodes; false if its rock is gone.
-  auto follow = [&](Anchor2& a) {
-    if (a.block < 0 || map[static_cast<size_t>(a.block)] < 0) return false;
-    a.block = map[static_cast<size_t>(a.block)];
-    if (a.node[0] >= 0 && !node_map.empty())
-      for (auto& n : a.node) {
-        if (node_map[static_cast<size_t>(n)] < 0) return false;
-        n = static_cast<int32_t>(node_map[static_cast<size_t>(n)]);
-      }
-    return true;
-  };
+  auto follow = [&](Anchor2& a) { return follow_anchor(a, map, node_map); };
   Reinforcement kept;
   std::vector<int32_t> element_map(R.size(), -1);
   for (size_t i = 0; i < R.bolts.size(); ++i) {

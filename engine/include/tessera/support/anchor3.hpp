@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "tessera/contact3d/polyhedron.hpp"
 
@@ -29,6 +30,8 @@ Vec3 anchor_velocity(const Model& m, const Anchor3& p);
 // An anchor at world point p in block b (in the zone holding p if b is deformable). Throws
 // ModelError if no zone of a deformable block holds it.
 Anchor3 make_anchor3(const Model& m, size_t b, const Vec3& p);
+// After blocks are deleted and nodes renumbered, as follow_anchor for 2D anchors.
+bool follow_anchor(Anchor3& a, const std::vector<int>& map, const std::vector<int64_t>& node_map);
 // The block holding p, or the one whose surface is nearest within `tol`; -1 if none.
 int block3_at(const Model& m, const Vec3& p, double tol);
 

@@ -76,6 +76,19 @@ Vec2 anchor_velocity(const Model& m, const Anchor2& p);
 double anchor_angle(const Model& m, const Anchor2& p);
 // An anchor at world point p in block b (in the zone holding p if b is deformable).
 Anchor2 make_anchor(const Model& m, size_t b, Vec2 p);
+// After blocks are deleted (map: old block index to new, -1 gone) and nodes renumbered
+// (node_map, empty if unchanged): the anchor follows its block and nodes; false if its rock is
+// gone.
+bool follow_anchor(Anchor2& a, const std::vector<int>& map, const std::vector<int64_t>& node_map);
+// A zone anchor's nodes renumbered by node_map (empty: unchanged); false if one is gone.
+template <size_t N>
+bool renumber_nodes(std::array<int32_t, N>& node, const std::vector<int64_t>& node_map) {
+  if (node[0] < 0 || node_map.empty()) return true;
+  for (const int32_t n : node)
+    if (node_map[static_cast<size_t>(n)] < 0) return false;
+  for (int32_t& n : node) n = static_cast<int32_t>(node_map[static_cast<size_t>(n)]);
+  return true;
+}
 
 // A bolt drawn as a polyline in world coordinates: its first end, each crossing, its last end,
 // with the element at each point (-1 at the ends).
