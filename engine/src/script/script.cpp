@@ -207,10 +207,9 @@ double Interpreter::num(const std::string& text) const {
     if (f == "blockat") {
       if (args.size() != static_cast<size_t>(model_.dim))
         throw ExprError(model_.dim == 3 ? "write blockat(x,y,z)" : "write blockat(x,y)");
-      std::ostringstream at;
-      at.precision(17);
-      for (size_t k = 0; k < args.size(); ++k) at << (k ? "," : "") << args[k];
-      return v = static_cast<double>(block_id(block_at(at.str()))), true;
+      std::ostringstream shown;
+      for (size_t k = 0; k < args.size(); ++k) shown << (k ? "," : "") << args[k];
+      return v = static_cast<double>(block_id(block_at(args, shown.str()))), true;
     }
     HistoryQuantity q;
     bool per_block = false;
@@ -301,13 +300,22 @@ int64_t Interpreter::block_index(int64_t id) const {
 // the contact tolerance (a point on a face or edge, as on the top of a column).
 size_t Interpreter::block_at(const std::string& v) const {
   if (model_.dim == 3) {
-    const int b = block3_at(model_, point3(v), model_.tolerance());
+    const Vec3 p = point3(v);
+    return block_at({p.x(), p.y(), p.z()}, v);
+  }
+  const Vec2 p = point(v);
+  return block_at({p.x(), p.y()}, v);
+}
+
+size_t Interpreter::block_at(const std::vector<double>& xyz, const std::string& shown) const {
+  if (model_.dim == 3) {
+    const int b = block3_at(model_, Vec3(xyz[0], xyz[1], xyz[2]), model_.tolerance());
     if (b < 0)
-      fail("no block contains the point " + v + " or has its surface within the tolerance");
+      fail("no block contains the point " + shown + " or has its surface within the tolerance");
     return static_cast<size_t>(b);
   }
   const Blocks& B = model_.blocks;
-  const Vec2 p = point(v);
+  const Vec2 p(xyz[0], xyz[1]);
   size_t best = B.size();
   double nearest = std::max(model_.tolerance(), 0.0);
   for (size_t b = 0; b < B.size() && (best == B.size() || nearest > 0.0); ++b) {
@@ -321,7 +329,7 @@ size_t Interpreter::block_at(const std::string& v) const {
         nearest = d, best = b;
   }
   if (best == B.size())
-    fail("no block contains the point " + v + " or has its outline within the tolerance");
+    fail("no block contains the point " + shown + " or has its outline within the tolerance");
   return best;
 }
 

@@ -251,6 +251,8 @@ class Interpreter {
   std::vector<size_t> select(Args& a, bool allow_words = false);
   // The block holding the point X,Y (X,Y,Z), or the nearest within the contact tolerance.
   size_t block_at(const std::string& text) const;
+  // The same at a point of the model's dimension (`shown`: how messages write it).
+  size_t block_at(const std::vector<double>& xyz, const std::string& shown) const;
   // A block's number as users see it, and the index of the block with a number (-1: none).
   int block_id(size_t b) const;
   int64_t block_index(int64_t id) const;
