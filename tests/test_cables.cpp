@@ -343,6 +343,12 @@ class TestCables : public QObject {
     QTest::newRow("pretension above yield")
         << 2 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 tension=1e4 pretension=2e4"
         << "pretension";
+    QTest::newRow("sfriction without perimeter")
+        << 2 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 sfriction=30"
+        << "needs perimeter=P";
+    QTest::newRow("sfriction out of range")
+        << 2 << "cable 1,0 4,0 segments=3 ea=1e8 kbond=1e8 sbond=0 sfriction=95 perimeter=0.1"
+        << "from 0 to 90 degrees";
     QTest::newRow("3D pattern") << 3
                                 << "cable pattern joints=j spacing=1 length=3 segments=3 ea=1e8 "
                                    "kbond=1e8 sbond=0"
