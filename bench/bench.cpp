@@ -143,6 +143,32 @@ int zone_scene(const std::string& scene, double edge, uint64_t cycles, int order
 
 }  // namespace
 
+// FNV-1a over the bytes of the blocks' positions and velocities and the contacts' forces: two
+// runs of a scene that print the same hash ended bit for bit the same (a change of the cycle
+// that should not change its arithmetic is checked by it).
+uint64_t state_hash(const Model& m) {
+  uint64_t h = 1469598103934665603ull;
+  const auto mix = [&](const auto& values) {
+    const auto* p = reinterpret_cast<const unsigned char*>(values.data());
+    for (size_t i = 0; i < values.size() * sizeof(values[0]); ++i)
+      h = (h ^ p[i]) * 1099511628211ull;
+  };
+  if (m.dim == 3) {
+    for (size_t b = 0; b < m.blocks3.body.size(); ++b) {
+      const RigidBody3& body = m.blocks3.body[b];
+      mix(std::array<double, 6>{body.position.x(), body.position.y(), body.position.z(),
+                                body.velocity.x(), body.velocity.y(), body.velocity.z()});
+    }
+    for (const Contact3& c : m.contacts3)
+      for (const SubContact& s : c.subs) mix(std::array<double, 1>{s.fn});
+  } else {
+    const Blocks& B = m.blocks;
+    for (const auto* v : {&B.x, &B.y, &B.theta, &B.vx, &B.vy, &B.omega}) mix(*v);
+    mix(m.contacts.fn), mix(m.contacts.fs);
+  }
+  return h;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Tessera benchmarks"};
   std::string scene = "wall";
@@ -240,11 +266,12 @@ int main(int argc, char** argv) {
              "{:.4g}, \"ratio\": {:.3e}, "
              "\"converged\": {}, \"damping\": \"{}\", \"scaled\": {}, \"top_settlement_m\": "
              "{:.6e}, \"dt\": {:.4e}, "
-             "\"detection_passes\": {}, \"stages\": {{{}}}{}}}",
+             "\"detection_passes\": {}, \"state_hash\": \"{:016x}\", \"stages\": {{{}}}{}}}",
              scene, cols, rows, threads, m.block_count(), contacts, m.dim == 3 ? updates : 0, ran,
              seconds, 1e3 * per_cycle, 1.0 / per_cycle, static_cast<double>(updates) / per_cycle,
              m.ratio, converged ? "true" : "false", damping, scaled ? "true" : "false",
-             top_before - mean_height(m, top), m.dt, m.detection_passes, stages, versus)
+             top_before - mean_height(m, top), m.dt, m.detection_passes, state_hash(m), stages,
+             versus)
       << std::endl;
   return 0;
 }
