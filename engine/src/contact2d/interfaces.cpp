@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/backend.hpp"
+#include "core/coulomb_law.hpp"
 #include "tessera/contact2d/contact_geometry.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/core/step.hpp"
@@ -47,9 +48,9 @@ void update_corner_contacts(Model& m) {
   const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
   parallel_for(C.size(), [&](size_t i0, size_t i1) {
+    FeatureHit hit;  // every path below fills it before reading it
     for (size_t i = i0; i < i1; ++i) {
       const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
-      FeatureHit hit;
       const bool lost = C.kind[i] == kLost;
       const CornerArc arc = corner_arc(B, a, v);
       const double depth = max_contact_depth(B, a, b);
@@ -145,6 +146,12 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
     while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) sum += along[g1++].first;
     return sum / static_cast<double>(g1 - g0);
   };
+  // Two contacts apart (the usual line): each takes half the distance between them, as below.
+  if (k == 2 && along[1].first - along[0].first > merge) {
+    const double len = 0.5 * (along[1].first - along[0].first);
+    for (const auto& [x, i] : along) C.length[i] = std::max(len, C.chord[i]);
+    return;
+  }
   size_t g0 = 0, g1 = 0;
   double prev = 0.0, centre = k ? group(0, g1) : 0.0;
   if (k && g1 == k) {
@@ -241,10 +248,15 @@ void update_interfaces(Model& m) {
           } else {
             general_lines(c0, c1);
           }
+          // The pair's blocks (either may own a contact), whether one is deformable, and the
+          // deepest overlap believed.
+          const uint32_t pa = C.a[c0], pb = C.b[c0];
+          const bool soft = B.deformable[pa] || B.deformable[pb];
+          const double depth_limit = kOverlapLimit * max_contact_depth(B, pa, pb);
           // A node of a deformable block stands for its own stretch of outline at most: a
           // light node alone against a long edge must not take the edge's stiffness.
           // (A pair's contacts can be owned by either block: checked per contact.)
-          if (B.deformable[C.a[c0]] || B.deformable[C.b[c0]])
+          if (soft)
             for (uint32_t i = c0; i < c1; ++i) {
               const uint32_t blk = C.a[i];
               if (!B.deformable[blk]) continue;
@@ -262,7 +274,7 @@ void update_interfaces(Model& m) {
               continue;
             }
             const double overlap = without_roundoff(-C.gap[i] + C.closure[i], roundoff);
-            if (-C.gap[i] > kOverlapLimit * max_contact_depth(B, C.a[i], C.b[i])) too_deep.flag(i);
+            if (-C.gap[i] > depth_limit) too_deep.flag(i);
             const double un = overlap + C.dilation[i];
             if (stays_open(un, C.fn[i], C.flags[i])) {
               C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
@@ -276,7 +288,6 @@ void update_interfaces(Model& m) {
             }
             // Shear displacement increment of a relative to b over the last step.
             const Vec2 n = C.normal[i], tn = perp(n);
-            const bool soft = B.deformable[C.a[i]] || B.deformable[C.b[i]];
             const Vec2 dv =
                 soft ? Vec2(contact_side_velocity(m, i, false) - contact_side_velocity(m, i, true))
                      : Vec2(point_velocity(B, C.a[i], C.point[i]) -
@@ -285,7 +296,7 @@ void update_interfaces(Model& m) {
             JointState s{C.fn[i],    C.fs[i], C.un_prev[i], C.dilation[i], C.shear_disp[i],
                          C.flags[i], 0.0,     0.0,          C.plastic[i]};
             const JointProperties& jp = m.joints[C.joint[i]];
-            jp.impl->update(jp, C.length[i], overlap, dus, s);
+            joint_update<true>(jp, C.length[i], overlap, dus, 0.0, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
             C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags, C.plastic[i] = s.plastic;
             double fn = s.fn, fs = s.fs;

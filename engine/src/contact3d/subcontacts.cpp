@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact3d/face_overlap.hpp"
+#include "core/coulomb_law.hpp"
 #include "tessera/contact2d/contacts.hpp"
 #include "tessera/contact3d/common_plane.hpp"
 
@@ -253,7 +254,7 @@ double joint_forces3(const Model& m, Contact3& c) {
     fastest = std::max(fastest, dv.squaredNorm());
     JointState st{s.fn,    fs.dot(t1), s.un_prev, s.dilation, s.sd1,
                   s.flags, fs.dot(t2), s.sd2,     s.plastic};
-    jp.impl->update(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
+    joint_update<false>(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
     s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
     s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags, s.plastic = st.plastic;
     s.fs = st.fs * t1 + st.fs2 * t2;

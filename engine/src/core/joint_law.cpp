@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "coulomb_law.hpp"
 #include "nonlinear_laws.hpp"
 #include "tessera/contact2d/contacts.hpp"
 #include "tessera/plugin.hpp"
@@ -13,9 +14,7 @@ namespace tessera {
 
 namespace {
 
-// Linear stiffness, Coulomb slip, cohesion and tensile strength lost for good on failure (or,
-// as coulomb-residual, a residual cohesion and friction after a shear failure), dilation while
-// slipping (up to an optional shear displacement).
+// The Coulomb law (coulomb_law.hpp), registered as "coulomb" and "coulomb-residual".
 class CoulombLaw final : public JointLaw {
  public:
   // residual: a failed bond keeps the residual cohesion and friction (law=coulomb-residual).
@@ -23,64 +22,7 @@ class CoulombLaw final : public JointLaw {
   const char* name() const override { return residual_ ? "coulomb-residual" : "coulomb"; }
   void update(const JointProperties& p, double L, double overlap, double dus, double dus2,
               JointState& s) const override {
-    const bool bonded = s.flags & kBonded;
-    s.flags &= static_cast<uint8_t>(~(kSlipping | kTouching));
-    const double un = overlap + s.dilation;
-    const double dun = un - s.un_prev;
-    s.un_prev = un;
-    // Open and unbonded: no force, and shear history is forgotten.
-    if (!bonded && un <= 0.0) {
-      s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
-      return;
-    }
-    s.flags |= kTouching;
-    // Incremental normal force, held between zero (or the bond) and the total-form value.
-    const double kn = p.kn * L, total = kn * un;
-    const double trial = s.fn + kn * dun;
-    if (!bonded)
-      s.fn = std::clamp(trial, 0.0, total);
-    else
-      s.fn = un >= 0.0 ? std::min(trial, total) : std::max(trial, total);
-    // Tensile failure breaks the bond for good.
-    if (bonded && s.fn < -p.tension * L) {
-      s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);
-      s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
-      return;
-    }
-    s.fs -= p.ks * L * dus;
-    s.fs2 -= p.ks * L * dus2;
-    s.shear_disp += dus;
-    s.shear_disp2 += dus2;
-    // Shear magnitude (the 2D form has one component and stays exact).
-    const bool plane = s.fs2 == 0.0;
-    const double mag = plane ? std::abs(s.fs) : std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
-    // The strength: a bond's peak; a failed one's residual (coulomb-residual); else friction.
-    const bool residual = residual_ && (s.flags & kBroken);
-    double limit = bonded     ? p.cohesion * L + s.fn * p.tan_friction
-                   : residual ? p.residual_cohesion * L + s.fn * p.tan_residual
-                              : s.fn * p.tan_friction;
-    if (mag > std::max(limit, 0.0)) {
-      // Shear failure of a bond leaves friction only.
-      if (bonded) {
-        s.flags = static_cast<uint8_t>((s.flags & ~kBonded) | kBroken);
-        s.fn = std::max(s.fn, 0.0);
-        limit = residual_ ? p.residual_cohesion * L + s.fn * p.tan_residual : s.fn * p.tan_friction;
-      }
-      // Back to the slip surface along the trial shear's direction.
-      if (plane) {
-        s.fs = std::copysign(std::max(limit, 0.0), s.fs);
-      } else {
-        const double scale = std::max(limit, 0.0) / mag;
-        s.fs *= scale, s.fs2 *= scale;
-      }
-      s.flags |= kSlipping;
-      const double travel =
-          plane ? std::abs(s.shear_disp)
-                : std::sqrt(s.shear_disp * s.shear_disp + s.shear_disp2 * s.shear_disp2);
-      if (p.tan_dilation > 0.0 && (p.dilation_limit <= 0.0 || travel < p.dilation_limit))
-        s.dilation +=
-            p.tan_dilation * (dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2));
-    }
+    coulomb_update<false>(p, residual_, L, overlap, dus, dus2, s);
   }
 
  private:
@@ -91,6 +33,10 @@ const CoulombLaw kCoulomb(false), kCoulombResidual(true);
 const JointLaw* const kLaws[] = {&kCoulomb, &kCoulombResidual, &cy_law(), &barton_bandis_law()};
 
 }  // namespace
+
+const JointLaw& coulomb_law(bool residual) {
+  return residual ? kCoulombResidual : kCoulomb;
+}
 
 const JointLaw* find_joint_law(const std::string& name) {
   for (const JointLaw* l : kLaws)
@@ -121,6 +67,7 @@ Dashpot contact_dashpot(const JointProperties& p, double size, double share, dou
 void JointProperties::finalize() {
   impl = find_joint_law(law);
   if (!impl) throw std::invalid_argument("unknown joint law '" + law + "'");
+  inline_coulomb = impl == &kCoulomb ? 0 : impl == &kCoulombResidual ? 1 : -1;
   impl->check(*this);
   tan_friction = std::tan(friction * std::numbers::pi / 180.0);
   tan_dilation = std::tan(dilation * std::numbers::pi / 180.0);

@@ -39,6 +39,11 @@ struct CornerArc {
 bool nearest_feature(const Blocks& blocks, uint32_t b, const CornerArc& arc, bool corners,
                      int first, int count, double max_depth, FeatureHit& hit);
 
+// The rounded corner vk of block b against the arc (along the line of the two arcs' centres);
+// false if that line leaves the corner's cone of edge normals or the overlap passes max_depth.
+bool corner_feature(const Blocks& blocks, uint32_t b, uint32_t vk, const CornerArc& arc,
+                    double max_depth, FeatureHit& hit);
+
 // Deepest plausible overlap between two blocks: a quarter of the smaller one's size.
 inline double max_contact_depth(const Blocks& blocks, uint32_t a, uint32_t b) {
   return 0.25 * std::min(blocks.bound_radius[a], blocks.bound_radius[b]);
@@ -68,18 +73,17 @@ inline bool edge_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerA
                          double max_depth, FeatureHit& hit, double* margin) {
   const Vec2& c = arc.centre;
   const double r = arc.radius;
-  const uint32_t v0 = B.vert_begin[b], n = B.vertex_count(b);
-  const uint32_t vn = vk + 1 < v0 + n ? vk + 1 : v0;
+  const uint32_t vn = vk + 1 < B.vert_begin[b + 1] ? vk + 1 : B.vert_begin[b];
   const Vec2& p = B.world_vertex[vk];
   const Vec2& u = B.world_edge_dir[vk];
   const double len = B.edge_length[vk];
   const Vec2 d = c - p;
   const double t = d.dot(u);
   // A hair of slack at the span's ends, so that round-off never leaves a corner that sits
-  // exactly at a tangent point without a feature.
+  // exactly at a tangent point without a feature. (A concave corner's rounding length is 0.)
   const double slack = 1e-9 * len;
-  const double lo = (B.convex[vk] ? B.round_length[vk] : 0.0) - slack;
-  const double hi = len - (B.convex[vn] ? B.round_length[vn] : 0.0) + slack;
+  const double lo = B.round_length[vk] - slack;
+  const double hi = len - B.round_length[vn] + slack;
   if (t < lo || t > hi) return false;
   const Vec2 nrm(u.y(), -u.x());
   const double s = d.dot(nrm);

@@ -65,6 +65,8 @@ struct JointProperties {
   double kn_max = 0.0, ks_max = 0.0;          // the stiffest tangents the law reaches (time step)
   double phi_initial = 0.0, peak_disp = 0.0;  // cy's initial friction, Barton's delta_peak
   const JointLaw* impl = nullptr;
+  // The Coulomb laws are called inline by the cycle: 0 coulomb, 1 coulomb-residual, -1 another.
+  int8_t inline_coulomb = -1;
   void finalize();  // derives the tangents and binds the law; throws on an unknown law
 };
 
