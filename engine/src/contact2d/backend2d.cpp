@@ -25,6 +25,7 @@ void prepare2d(Model& m) {
     if (m.blocks.mass[b] <= 0.0 && m.blocks.fixity[b] != kFixAll)
       throw ModelError("block " + std::to_string(m.blocks.id[b]) +
                        " has no mass: give it a material with a density");
+  m.blocks.shrink_to_fit();
   if (m.det_x.size() != m.blocks.size()) m.detection_due = true;
   if (m.block_contact_begin.size() != m.blocks.size() + 1) m.build_block_contacts();
 }

@@ -126,6 +126,13 @@ std::vector<std::vector<double>*> Blocks::block_doubles() {
           &fixed_omega, &area,    &perimeter, &bound_radius};
 }
 
+void Blocks::shrink_to_fit() {
+  for (std::vector<double>* v : block_doubles()) v->shrink_to_fit();
+  fixity.shrink_to_fit(), all_convex.shrink_to_fit(), deformable.shrink_to_fit();
+  group.shrink_to_fit(), material.shrink_to_fit(), id.shrink_to_fit(), vert_begin.shrink_to_fit();
+  each_vertex_array(*this, [](auto& v, auto&) { v.shrink_to_fit(); });
+}
+
 std::vector<int> Blocks::remove(const std::vector<uint8_t>& doomed) {
   const size_t n = size();
   std::vector<int> map(n, -1);

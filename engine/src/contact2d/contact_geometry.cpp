@@ -36,10 +36,38 @@ bool inside_outline(const Blocks& B, uint32_t b, const Vec2& p) {
 
 }  // namespace
 
-bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool corners, int first,
-                     int count, double max_depth, FeatureHit& hit) {
+bool corner_feature(const Blocks& B, uint32_t b, uint32_t vk, const CornerArc& arc,
+                    double max_depth, FeatureHit& h) {
   const Vec2& c = arc.centre;
   const double r = arc.radius;
+  const uint32_t vp = B.prev_vertex(b, vk);
+  const Vec2& cb = B.world_arc_centre[vk];
+  Vec2 dv = c - cb;
+  double d = dv.norm();
+  if (d <= 0.0) return false;
+  // The owner's arc towards the other: along the line of centres if the arc faces that
+  // way, else from the end of the arc nearer to the other one.
+  Vec2 qa = c;
+  double ra = r;
+  if (!arc_faces(arc, -dv / d)) {
+    const Vec2 e0 = c + r * arc.n_in, e1 = c + r * arc.n_out;
+    qa = (e0 - cb).squaredNorm() <= (e1 - cb).squaredNorm() ? e0 : e1, ra = 0.0;
+    dv = qa - cb, d = dv.norm();
+    if (d <= 0.0) return false;
+  }
+  const double slack = 1e-9 * d;
+  if (cross(edge_normal(B, vp), dv) < -slack || cross(dv, edge_normal(B, vk)) < -slack)
+    return false;
+  const double rb = B.arc_radius[vk];
+  h.kind = kCornerCorner, h.feature = vk, h.gap = d - ra - rb, h.normal = dv / d;
+  if (h.gap < -max_depth) return false;
+  h.point = qa - h.normal * (ra + 0.5 * h.gap);
+  h.chord = circle_chord(d, ra, rb);
+  return true;
+}
+
+bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool corners, int first,
+                     int count, double max_depth, FeatureHit& hit) {
   const uint32_t v0 = B.vert_begin[b];
   const int n = static_cast<int>(B.vertex_count(b));
   const int nf = 2 * n;
@@ -59,29 +87,7 @@ bool nearest_feature(const Blocks& B, uint32_t b, const CornerArc& arc, bool cor
       // Rounded corner: valid inside the cone of its two edge normals. A straight node of a
       // deformable block (no rounding) is met through the edges on either side of it.
       if (!corners || !B.convex[vk] || B.arc_radius[vk] <= 0.0) continue;
-      const uint32_t vp = v0 + static_cast<uint32_t>((f / 2 + n - 1) % n);
-      const Vec2& cb = B.world_arc_centre[vk];
-      Vec2 dv = c - cb;
-      double d = dv.norm();
-      if (d <= 0.0) continue;
-      // The owner's arc towards the other: along the line of centres if the arc faces that
-      // way, else from the end of the arc nearer to the other one.
-      Vec2 qa = c;
-      double ra = r;
-      if (!arc_faces(arc, -dv / d)) {
-        const Vec2 e0 = c + r * arc.n_in, e1 = c + r * arc.n_out;
-        qa = (e0 - cb).squaredNorm() <= (e1 - cb).squaredNorm() ? e0 : e1, ra = 0.0;
-        dv = qa - cb, d = dv.norm();
-        if (d <= 0.0) continue;
-      }
-      const double slack = 1e-9 * d;
-      if (cross(edge_normal(B, vp), dv) < -slack || cross(dv, edge_normal(B, vk)) < -slack)
-        continue;
-      const double rb = B.arc_radius[vk];
-      h.kind = kCornerCorner, h.feature = vk, h.gap = d - ra - rb, h.normal = dv / d;
-      if (h.gap < -max_depth) continue;
-      h.point = qa - h.normal * (ra + 0.5 * h.gap);
-      h.chord = circle_chord(d, ra, rb);
+      if (!corner_feature(B, b, vk, arc, max_depth, h)) continue;
     }
     if (found && std::abs(h.gap) >= best) continue;
     found = true, best = std::abs(h.gap), hit = h;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 
@@ -98,12 +99,28 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
   return pairs;
 }
 
-// A contact found in this pass: corner `corner` of `owner` against `other`.
+// A contact found in this pass: corner `corner` of `owner` against the feature of `other` it
+// meets (its geometry is computed again from these when the contact is stored: 32 bytes a
+// find instead of 96 keep the pass's peak memory down).
 struct Found {
-  uint32_t lo, hi, owner, corner, other;
-  uint8_t slot;
-  FeatureHit hit;
+  uint32_t owner, corner, other, feature;
+  uint8_t slot, kind;
+  double gap;
+  uint32_t lo() const { return std::min(owner, other); }
+  uint32_t hi() const { return std::max(owner, other); }
 };
+
+// The geometry of a find, as the search computed it.
+FeatureHit found_hit(const Blocks& B, const Found& f) {
+  FeatureHit hit;
+  const CornerArc arc = corner_arc(B, f.owner, f.corner);
+  const double depth = max_contact_depth(B, f.owner, f.other);
+  const bool ok = f.kind == kCornerEdge
+                      ? edge_feature(B, f.other, f.feature, arc, depth, hit, nullptr)
+                      : corner_feature(B, f.other, f.feature, arc, depth, hit);
+  if (!ok) throw std::logic_error("a contact found in detection has lost its feature");
+  return hit;
+}
 
 // Corners of `owner` within reach of block `other`.
 void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& other_box,
@@ -121,8 +138,7 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
     FeatureHit hit;
     const double depth = max_contact_depth(B, owner, other);
     if (!nearest_feature(B, other, arc, corners, 0, nf, depth, hit) || hit.gap >= reach) continue;
-    const uint32_t lo = std::min(owner, other), hi = std::max(owner, other);
-    out.push_back({lo, hi, owner, v, other, 0, hit});
+    out.push_back({owner, v, other, hit.feature, 0, hit.kind, hit.gap});
     if (B.all_convex[other] || hit.kind != kCornerEdge) continue;
     // In the notch of a concave block the corner also touches a second face: one it is near,
     // not a face of the block far behind the first.
@@ -133,7 +149,7 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
           h.normal.dot(hit.normal) < 0.7 && (!has_second || std::abs(h.gap) < std::abs(second.gap)))
         second = h, has_second = true;
     if (!has_second) continue;
-    out.push_back({lo, hi, owner, v, other, 1, second});
+    out.push_back({owner, v, other, second.feature, 1, second.kind, second.gap});
   }
 }
 
@@ -175,18 +191,18 @@ void detect_contacts(Model& m) {
   };
   for (size_t k = 0; k < found.size(); ++k) {
     const Found& f = found[k];
-    const auto key = std::make_tuple(f.lo, f.hi, f.owner, f.corner, f.slot);
+    const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot);
     while (j < old.size() && old_key(j) < key) ++j;
     if (j < old.size() && old_key(j) == key) {
       from[k] = static_cast<uint32_t>(j);
       continue;
     }
     // The joint tag of the face met (for a rounded corner, the later of its two edges).
-    const uint32_t e = f.hit.feature;
+    const uint32_t e = f.feature;
     const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
     const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
     int tag = std::max(B.edge_tag[e], B.edge_tag[prev]);
-    if (f.hit.kind == kCornerEdge) {
+    if (f.kind == kCornerEdge) {
       // The face met, and the owner's edge that lies along it (a joint is tagged on either
       // side, or only on the side a generator made).
       const uint32_t o0 = B.vert_begin[f.owner], no = B.vertex_count(f.owner);
@@ -235,11 +251,12 @@ void detect_contacts(Model& m) {
       const JointProperties& jp = m.joints[fresh[q++].first];
       // Joints shut when the model is assembled are bonded (cohesion and tension act); a
       // contact open by more than round-off is a gap, not a joint.
-      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && f.hit.gap <= m.bond_gap())
+      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && f.gap <= m.bond_gap())
         next.flags[k] |= kBonded;
     }
-    next.kind[k] = f.hit.kind, next.feature[k] = f.hit.feature, next.gap[k] = f.hit.gap;
-    next.normal[k] = f.hit.normal, next.point[k] = f.hit.point, next.chord[k] = f.hit.chord;
+    const FeatureHit hit = found_hit(B, f);
+    next.kind[k] = hit.kind, next.feature[k] = hit.feature, next.gap[k] = hit.gap;
+    next.normal[k] = hit.normal, next.point[k] = hit.point, next.chord[k] = hit.chord;
     // Both contacts of a corner in a notch keep their own face.
     const bool notch = f.slot == 1 || (k + 1 < found.size() && found[k + 1].slot == 1);
     next.flags[k] = static_cast<uint8_t>(notch ? next.flags[k] | kNotch : next.flags[k] & ~kNotch);

@@ -97,6 +97,9 @@ struct Blocks {
   std::vector<Vec2> world_polygon(size_t b) const;
   // Every per-block double array, in a fixed order (for copying and saving).
   std::vector<std::vector<double>*> block_doubles();
+  // Gives back the spare capacity the arrays grew while blocks were added one by one (up to
+  // half of each), before cycling.
+  void shrink_to_fit();
   // Applies the fixity bits to the inverse masses.
   void refresh_inverse_mass(size_t b);
 };
