@@ -42,59 +42,61 @@ bool corner_buried(const Blocks& B, uint32_t v, uint32_t b, double overlap) {
   return true;
 }
 
-// Contact geometry from the current positions: the nearest feature of the other block to each
-// corner (searched around last cycle's feature), gap, normal, contact point and chord.
+// Contact geometry from the current positions for contacts [i0, i1): the nearest feature of the
+// other block to each corner (searched around last cycle's feature), gap, normal, contact point
+// and chord. The outputs are restrict: the compiler may then keep the block arrays' addresses in
+// registers across a contact instead of reloading them after every store.
+void corner_chunk(const Blocks& B, const Contacts& C, size_t i0, size_t i1,
+                  uint8_t* __restrict kind, uint32_t* __restrict feature, double* __restrict gap,
+                  Vec2* __restrict normal, Vec2* __restrict point, double* __restrict chord) {
+  FeatureHit hit;  // every path below fills it before reading it
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  for (size_t i = i0; i < i1; ++i) {
+    const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
+    const bool lost = kind[i] == kLost;
+    const CornerArc arc = corner_arc(B, a, v);
+    const double depth = max_contact_depth(B, a, b);
+    // A corner in a notch keeps its face: valid or lost, no search.
+    if (C.flags[i] & kNotch) {
+      if (kind[i] == kCornerEdge && edge_feature(B, b, feature[i], arc, depth, hit, nullptr)) {
+        gap[i] = hit.gap, normal[i] = hit.normal, point[i] = hit.point, chord[i] = hit.chord;
+      } else {
+        kind[i] = kLost, gap[i] = kFar, chord[i] = 0.0;
+      }
+      continue;
+    }
+    // Fast path: still well inside the span of the same edge.
+    double margin = -1.0;
+    if (kind[i] == kCornerEdge && edge_feature(B, b, feature[i], arc, depth, hit, &margin) &&
+        margin > 0.0) {
+      gap[i] = hit.gap, normal[i] = hit.normal, point[i] = hit.point, chord[i] = hit.chord;
+      continue;
+    }
+    const int first = lost ? 0 : local_feature(B, b, kind[i], feature[i]) - 2;
+    const int all = 2 * static_cast<int>(B.vertex_count(b));
+    bool found = nearest_feature(B, b, arc, a < b, first, lost ? all : 5, depth, hit);
+    // An overlap past the arc's radius is rare and suspect: the whole block is searched for a
+    // nearer feature, and it is believed only if the owner's sharp corner is inside b (a toe
+    // sunk into a soft joint is; a corner at the tip of a thin sliver of b, measured against
+    // the sliver's far side, is not).
+    if (found && hit.gap < -arc.radius)
+      found = (lost || nearest_feature(B, b, arc, a < b, 0, all, depth, hit)) &&
+              (hit.gap >= -arc.radius || corner_buried(B, v, b, -hit.gap));
+    if (!found) {
+      // The corner has left the reach of every feature: it carries nothing until found again.
+      kind[i] = kLost, gap[i] = kFar, chord[i] = 0.0;
+      continue;
+    }
+    kind[i] = hit.kind, feature[i] = hit.feature, gap[i] = hit.gap;
+    normal[i] = hit.normal, point[i] = hit.point, chord[i] = hit.chord;
+  }
+}
+
 void update_corner_contacts(Model& m) {
-  const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
   parallel_for(C.size(), [&](size_t i0, size_t i1) {
-    FeatureHit hit;  // every path below fills it before reading it
-    for (size_t i = i0; i < i1; ++i) {
-      const uint32_t a = C.a[i], b = C.b[i], v = C.corner[i];
-      const bool lost = C.kind[i] == kLost;
-      const CornerArc arc = corner_arc(B, a, v);
-      const double depth = max_contact_depth(B, a, b);
-      // A corner in a notch keeps its face: valid or lost, no search.
-      if (C.flags[i] & kNotch) {
-        if (C.kind[i] == kCornerEdge &&
-            edge_feature(B, b, C.feature[i], arc, depth, hit, nullptr)) {
-          C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point;
-          C.chord[i] = hit.chord;
-        } else {
-          C.kind[i] = kLost;
-          C.gap[i] = std::numeric_limits<double>::infinity();
-          C.chord[i] = 0.0;
-        }
-        continue;
-      }
-      // Fast path: still well inside the span of the same edge.
-      double margin = -1.0;
-      if (C.kind[i] == kCornerEdge && edge_feature(B, b, C.feature[i], arc, depth, hit, &margin) &&
-          margin > 0.0) {
-        C.gap[i] = hit.gap, C.normal[i] = hit.normal, C.point[i] = hit.point,
-        C.chord[i] = hit.chord;
-        continue;
-      }
-      const int first = lost ? 0 : local_feature(B, b, C.kind[i], C.feature[i]) - 2;
-      const int all = 2 * static_cast<int>(B.vertex_count(b));
-      bool found = nearest_feature(B, b, arc, a < b, first, lost ? all : 5, depth, hit);
-      // An overlap past the arc's radius is rare and suspect: the whole block is searched for a
-      // nearer feature, and it is believed only if the owner's sharp corner is inside b (a toe
-      // sunk into a soft joint is; a corner at the tip of a thin sliver of b, measured against
-      // the sliver's far side, is not).
-      if (found && hit.gap < -arc.radius)
-        found = (lost || nearest_feature(B, b, arc, a < b, 0, all, depth, hit)) &&
-                (hit.gap >= -arc.radius || corner_buried(B, v, b, -hit.gap));
-      if (!found) {
-        // The corner has left the reach of every feature: it carries nothing until found again.
-        C.kind[i] = kLost;
-        C.gap[i] = std::numeric_limits<double>::infinity();
-        C.chord[i] = 0.0;
-        continue;
-      }
-      C.kind[i] = hit.kind, C.feature[i] = hit.feature, C.gap[i] = hit.gap;
-      C.normal[i] = hit.normal, C.point[i] = hit.point, C.chord[i] = hit.chord;
-    }
+    corner_chunk(m.blocks, C, i0, i1, C.kind.data(), C.feature.data(), C.gap.data(),
+                 C.normal.data(), C.point.data(), C.chord.data());
   });
 }
 
