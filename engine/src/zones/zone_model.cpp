@@ -68,13 +68,41 @@ bool mohr_coulomb_return(double bulk, double shear, const Strength& p, double& s
 }
 }  // namespace
 
+// Whether a 3D stress is surely inside Mohr-Coulomb's surface: the extreme principal stresses
+// from the invariants in closed form (the trigonometric roots of the characteristic cubic),
+// with a margin of 1e-6 of the stress's size, twenty-five times the closed form's worst error
+// (where two roots meet, acos loses half the digits: about 4e-8 of the deviator). A zone
+// inside by that margin is elastic in the exact decomposition too, so skipping the
+// decomposition leaves the results unchanged; any nearer zone takes the full path.
+bool surely_elastic(const Strength& p, const ZoneStress& s) {
+  const double q = (s.xx + s.yy + s.zz) / 3.0;
+  const double off = s.xy * s.xy + s.yz * s.yz + s.xz * s.xz;
+  const double dx = s.xx - q, dy = s.yy - q, dz = s.zz - q;
+  const double r = std::sqrt((dx * dx + dy * dy + dz * dz + 2.0 * off) / 6.0);
+  double lo = q, hi = q;
+  if (r > 0.0) {
+    const double det = dx * (dy * dz - s.yz * s.yz) - s.xy * (s.xy * dz - s.yz * s.xz) +
+                       s.xz * (s.xy * s.yz - dy * s.xz);
+    const double phi = std::acos(std::clamp(0.5 * det / (r * r * r), -1.0, 1.0)) / 3.0;
+    hi = q + 2.0 * r * std::cos(phi);
+    lo = q + 2.0 * r * std::cos(phi + 2.0 * std::numbers::pi / 3.0);
+  }
+  const double sphi = std::sin(p.friction * kDeg);
+  const double nphi = (1 + sphi) / (1 - sphi), rn = std::sqrt(nphi);
+  double st = p.tension;
+  if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
+  const double margin = 1e-6 * (std::abs(q) + r + p.cohesion * rn + std::abs(st));
+  return lo - hi * nphi + 2.0 * p.cohesion * rn > margin * (1.0 + nphi) && st - hi > margin;
+}
+
 // When z is a principal direction (every 2D zone, in plane strain) the principal stresses are
-// the plane's two in closed form and zz; otherwise the symmetric tensor's eigen-decomposition.
-// The correction keeps the principal directions.
+// the plane's two in closed form and zz; otherwise the symmetric tensor's eigen-decomposition,
+// unless the stress is surely elastic. The correction keeps the principal directions.
 bool mohr_coulomb_correct(double bulk, double shear, const Strength& st, ZoneStress& s,
                           uint8_t& state, double* shear_strain) {
   double gamma = 0;
   if (s.yz != 0 || s.xz != 0) {
+    if (surely_elastic(st, s)) return false;
     const Principal pr = principal_3d(s);
     std::array<double, 3> v = pr.s;
     if (!mohr_coulomb_return(bulk, shear, st, v[0], v[1], v[2], state, gamma)) return false;
