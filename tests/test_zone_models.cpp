@@ -9,6 +9,7 @@
 // Script runs: zoned samples hold 2% below their closed-form strength and fail 2% above it; a
 // transversely isotropic square and cube strain as the compliance says; the plastic strain is
 // written to VTK and kept by state files (also at a quadratic zone's integration points).
+// 3D Mohr-Coulomb's shortcut past the eigen-decomposition skips no stress outside its surface.
 #include <Eigen/Dense>
 #include <QtTest>
 #include <algorithm>
@@ -223,6 +224,49 @@ class TestZoneModels : public QObject {
     QCOMPARE(s.xx, 1.0);
     QCOMPARE(state, uint8_t(7));
     QCOMPARE(history, 0.25);
+  }
+
+  // 3D Mohr-Coulomb skips the eigen-decomposition of stresses surely inside its surface: no
+  // stress outside may be skipped. Rotated principal stresses (two or three of them equal, where
+  // the closed-form roots are least accurate) inside, on and outside the shear surface by 1e-7
+  // and 1e-5 of the strength, at confinements from tension to 8 MPa: after an update with no
+  // strain, every stress inside is untouched and every stress outside has been corrected.
+  void mohrCoulombSkipsOnlyElasticStresses() {
+    ZoneProperties p = base("mohr-coulomb");
+    p.friction = 35, p.cohesion = 1e6, p.tension = 0.4e6, p.dilation = 5;
+    p.finalize();
+    const double nphi = (1 + std::sin(35 * kDeg)) / (1 - std::sin(35 * kDeg));
+    const double shear_cap = 2e6 * std::sqrt(nphi);
+    const Eigen::Matrix3d rot = (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) *
+                                 Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()))
+                                    .toRotationMatrix();
+    int inside = 0, outside = 0;
+    for (const double s3 : {-8e6, -2e6, 0.0, 0.3e6}) {
+      for (const double mid_share : {0.0, 0.5, 1.0}) {  // s2 at s1, between, at s3
+        for (const double off : {-1e-5, -1e-7, 0.0, 1e-7, 1e-5}) {
+          // s1 on the shear surface for this s3, moved out by `off` of the strength.
+          const double s1 = s3 * nphi - shear_cap - off * shear_cap;
+          const double s2 = s1 + mid_share * (s3 - s1);
+          const Eigen::Matrix3d m =
+              rot * Eigen::Vector3d(s1, s2, s3).asDiagonal() * rot.transpose();
+          ZoneStress st{m(0, 0), m(1, 1), m(0, 1), m(2, 2), m(1, 2), m(0, 2)};
+          const ZoneStress before = st;
+          uint8_t state = 0;
+          double history = 0;
+          p.impl->update(p, StrainIncrement{}, st, state, history);
+          const QString where = QString("s3 %1 share %2 off %3").arg(s3).arg(mid_share).arg(off);
+          if (off < 0) {
+            ++inside;
+            QVERIFY2(state == 0 && st.xx == before.xx && st.xz == before.xz, qPrintable(where));
+          } else if (off > 0) {
+            ++outside;
+            QVERIFY2(state != 0 && st.xx != before.xx, qPrintable(where));
+          }
+        }
+      }
+    }
+    QCOMPARE(inside, 24);
+    QCOMPARE(outside, 24);
   }
 
   // Triaxial (3D) and biaxial plane-strain (2D) compression at 1 MPa confinement: at every
