@@ -68,17 +68,43 @@ bool mohr_coulomb_return(double bulk, double shear, const Strength& p, double& s
 }
 }  // namespace
 
-// Whether a 3D stress is surely inside Mohr-Coulomb's surface: the extreme principal stresses
-// from the invariants in closed form (the trigonometric roots of the characteristic cubic),
-// with a margin of 1e-6 of the stress's size, twenty-five times the closed form's worst error
-// (where two roots meet, acos loses half the digits: about 4e-8 of the deviator). A zone
-// inside by that margin is elastic in the exact decomposition too, so skipping the
-// decomposition leaves the results unchanged; any nearer zone takes the full path.
+// Mohr-Coulomb's Nphi, its root and the tensile strength capped at the cone's apex, for the
+// strength last asked on this thread (a material's constants; a softening zone's change).
+struct ConeConstants {
+  double friction = -1, cohesion = -1, tension = -1;
+  double nphi = 1, rn = 1, st = 0;
+};
+const ConeConstants& cone_constants(const Strength& p) {
+  thread_local ConeConstants c;
+  if (p.friction != c.friction || p.cohesion != c.cohesion || p.tension != c.tension) {
+    const double sphi = std::sin(p.friction * kDeg);
+    c = {p.friction, p.cohesion, p.tension, (1 + sphi) / (1 - sphi), 0.0, p.tension};
+    c.rn = std::sqrt(c.nphi);
+    if (sphi > 0) c.st = std::min(c.st, p.cohesion / std::tan(p.friction * kDeg));
+  }
+  return c;
+}
+
+// Whether a 3D stress is surely inside Mohr-Coulomb's surface, by a margin of 1e-6 of the
+// stress's size: first from bounds on the principal stresses (mean q, deviator size r: each
+// within 2r of q, the extreme two within 2 sqrt(3) r of each other), then from the extreme
+// principal stresses in closed form (the trigonometric roots of the characteristic cubic). The
+// margin is twenty-five times the closed form's worst error (where two roots meet, acos loses
+// half the digits: about 4e-8 of r), so a zone inside by it is elastic in the exact
+// decomposition too, and skipping that leaves the results unchanged; nearer zones take the
+// full path.
 bool surely_elastic(const Strength& p, const ZoneStress& s) {
+  const ConeConstants& k = cone_constants(p);
   const double q = (s.xx + s.yy + s.zz) / 3.0;
   const double off = s.xy * s.xy + s.yz * s.yz + s.xz * s.xz;
   const double dx = s.xx - q, dy = s.yy - q, dz = s.zz - q;
   const double r = std::sqrt((dx * dx + dy * dy + dz * dz + 2.0 * off) / 6.0);
+  const double margin = 1e-6 * (std::abs(q) + r + p.cohesion * k.rn + std::abs(k.st));
+  const double cap = 2.0 * p.cohesion * k.rn, need = margin * (1.0 + k.nphi);
+  // fs = s1 - s3 Nphi + cap = (s1 - s3) - s3 (Nphi - 1) + cap, ft = st - s3.
+  if (k.nphi >= 1.0 && -2.0 * std::sqrt(3.0) * r - (q + 2.0 * r) * (k.nphi - 1.0) + cap > need &&
+      k.st - (q + 2.0 * r) > margin)
+    return true;
   double lo = q, hi = q;
   if (r > 0.0) {
     const double det = dx * (dy * dz - s.yz * s.yz) - s.xy * (s.xy * dz - s.yz * s.xz) +
@@ -87,12 +113,7 @@ bool surely_elastic(const Strength& p, const ZoneStress& s) {
     hi = q + 2.0 * r * std::cos(phi);
     lo = q + 2.0 * r * std::cos(phi + 2.0 * std::numbers::pi / 3.0);
   }
-  const double sphi = std::sin(p.friction * kDeg);
-  const double nphi = (1 + sphi) / (1 - sphi), rn = std::sqrt(nphi);
-  double st = p.tension;
-  if (sphi > 0) st = std::min(st, p.cohesion / std::tan(p.friction * kDeg));
-  const double margin = 1e-6 * (std::abs(q) + r + p.cohesion * rn + std::abs(st));
-  return lo - hi * nphi + 2.0 * p.cohesion * rn > margin * (1.0 + nphi) && st - hi > margin;
+  return lo - hi * k.nphi + cap > need && k.st - hi > margin;
 }
 
 // When z is a principal direction (every 2D zone, in plane strain) the principal stresses are
