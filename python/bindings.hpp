@@ -22,6 +22,9 @@ struct PyModel {
     uint64_t every = 1;
   };
   PyModel(const std::string& out, bool quiet);
+  ~PyModel();
+  PyModel(const PyModel&) = delete;
+  PyModel& operator=(const PyModel&) = delete;
   // Runs script text (one or more lines) as if it stood at file:line (the caller's place in
   // Python); on an error the model, variables and stages are put back as they were.
   void run(const std::string& text);
@@ -30,6 +33,8 @@ struct PyModel {
   // Called after every cycle of a step or solve: the Python callbacks that are due.
   void observe(const Model& m);
   Model& model() { return interp->model(); }
+  // Writes the results folder (Interpreter::finish).
+  void finish();
 
   std::unique_ptr<Interpreter> interp;
   std::vector<Callback> callbacks;
@@ -37,6 +42,8 @@ struct PyModel {
   std::optional<py::error_already_set> pending;
   bool in_callback = false;
   bool quiet = false;
+  // Changed since its results were last written: they are written at the program's exit.
+  bool unwritten = false;
 };
 
 // An array group (m.blocks, m.contacts, ...): the Python model it belongs to.

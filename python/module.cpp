@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "bindings.hpp"
@@ -94,6 +95,25 @@ bool cycles(const std::string& text) {
   return false;
 }
 
+// The models alive, for their results at exit.
+std::set<PyModel*>& live_models() {
+  static std::set<PyModel*> models;
+  return models;
+}
+
+// At the program's exit (after an uncaught exception too), each model changed since its results
+// were last written writes them, as a batch run does.
+void finish_all() {
+  for (PyModel* m : live_models()) {
+    if (!m->unwritten) continue;
+    try {
+      m->finish();
+    } catch (const std::exception& e) {
+      py::print("tessera:", e.what(), py::arg("file") = py::module_::import("sys").attr("stderr"));
+    }
+  }
+}
+
 }  // namespace
 
 PyModel::PyModel(const std::string& out, bool be_quiet)
@@ -105,6 +125,16 @@ PyModel::PyModel(const std::string& out, bool be_quiet)
       quiet(be_quiet) {
   interp->set_progress_interval(quiet ? 0.0 : 2.0);
   interp->set_observer([this](const Model& m) { observe(m); });
+  live_models().insert(this);
+}
+
+PyModel::~PyModel() {
+  live_models().erase(this);
+}
+
+void PyModel::finish() {
+  interp->finish();
+  unwritten = false;
 }
 
 void PyModel::run(const std::string& text) {
@@ -115,6 +145,7 @@ void PyModel::run(const std::string& text) {
   std::optional<SavePoint> before;
   if (!in_callback) before = interp->save_point();
   pending.reset();
+  unwritten = true;
   try {
     std::istringstream in(text);
     std::string one;
@@ -181,6 +212,7 @@ PYBIND11_MODULE(tessera, mod) {
           "The results folder a Model writes to by default: that of `tessera --batch --out`, or "
           "<script>_out beside the running script");
   bind_arrays(mod);
+  py::module_::import("atexit").attr("register")(py::cpp_function(&finish_all));
 
   const auto group = [](auto tag) {
     using G = decltype(tag);
@@ -270,6 +302,7 @@ PYBIND11_MODULE(tessera, mod) {
                                       " nodes)");
             const size_t d = m.dim;
             const std::vector<double> rows = rows_of(f, idx.size(), d, "set_node_force");
+            s.unwritten = true;
             for (size_t i = 0; i < idx.size(); ++i)
               for (size_t k = 0; k < d; ++k) {
                 const auto n = static_cast<size_t>(idx[i]);
@@ -322,13 +355,13 @@ PYBIND11_MODULE(tessera, mod) {
             }
           },
           py::arg("name"), "The value of a script variable")
-      .def(
-          "finish", [](PyModel& s) { s.interp->finish(); },
-          "Writes history.csv, a final VTK snapshot and summary.json into the results folder")
+      .def("finish", &PyModel::finish,
+           "Writes history.csv, a final VTK snapshot and summary.json into the results folder "
+           "(done at the program's exit for every model changed since it last wrote them)")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__",
            [](PyModel& s, py::object, py::object, py::object) {
-             s.interp->finish();
+             s.finish();
              return false;
            })
       .def_property_readonly("dim", [](PyModel& s) { return int(s.model().dim); })

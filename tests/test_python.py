@@ -3,8 +3,10 @@
 Run by ctest (python/ puts the built module on PYTHONPATH); prints the measured numbers.
 """
 import inspect
+import json
 import math
 import os
+import subprocess
 import sys
 import tempfile
 import unittest
@@ -280,6 +282,19 @@ class Commands(unittest.TestCase):
         for f in ("history.csv", "summary.json", "vtk/blocks.pvd"):
             self.assertTrue(os.path.exists(os.path.join(out, f)), f)
         m.finish()
+
+    def test_results_written_at_exit_after_an_error(self):
+        out = os.path.join(OUT, "at_exit")
+        script = ("import tessera\n"
+                  f"m = tessera.Model(out={out!r}, quiet=True)\n"
+                  f"m.command({INCLINE!r})\n"
+                  "m.cycle(10)\n"
+                  "m.command('frobnicate')\n")
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 1)
+        self.assertIn("<string>:5: unknown command 'frobnicate'", run.stderr)
+        with open(os.path.join(out, "summary.json")) as f:
+            self.assertEqual(json.load(f)["cycles"], 10)
 
 
 class Stack3D(unittest.TestCase):
