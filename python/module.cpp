@@ -340,6 +340,18 @@ PYBIND11_MODULE(tessera, mod) {
           },
           py::arg("g"), "Sets the gravitational acceleration (m/s^2), a vector of the dimension")
       .def(
+          "set_table",
+          [](PyModel& s, const std::string& name, const std::vector<double>& time,
+             const std::vector<double>& value) {
+            try {
+              s.interp->set_table(name, Table{time, value});
+            } catch (const std::invalid_argument& e) {
+              throw py::value_error(e.what());
+            }
+          },
+          py::arg("name"), py::arg("time"), py::arg("value"),
+          "Defines (or replaces) a table of values at increasing times, for table=NAME")
+      .def(
           "set_variable",
           [](PyModel& s, const std::string& name, double v) {
             s.run("set " + name + " = " + number(v));

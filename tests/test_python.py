@@ -393,5 +393,98 @@ class Column(unittest.TestCase):
         self.assertEqual(np.abs(m.nodes.applied).max(), 0.0)
 
 
+# One free 1 m square block, no contacts, a fixed time step of 1 ms.
+LONE = """
+round 0.01
+material define rock density=1000
+block 0,0 1,0 1,1 0,1 material=rock
+damping none
+timestep fixed 1e-3
+"""
+
+
+class Tables(unittest.TestCase):
+    """Tables as time histories of velocities, gravity and boundary loads; contact histories."""
+
+    def test_velocity_follows_a_ramp(self):
+        m = model(LONE, "ramp_velocity")
+        m.set_table("ramp", [0.0, 1.0], [0.0, 1.0])
+        m.command("fix block=1\nvelocity block=1 vx=2 table=ramp")
+        m.cycle(1000)
+        # v = 2 t: x = t^2 at t = 1 s (to the step's first order).
+        print(f"ramp velocity: x = {m.blocks.disp[0, 0]:.5f} m at {m.time:.4f} s, closed form 1")
+        self.assertAlmostEqual(m.blocks.disp[0, 0], 1.0, delta=0.005)
+        self.assertAlmostEqual(m.blocks.vel[0, 0], 2.0, delta=0.005)
+        m.command("table stop")
+        m.cycle(100)  # held at its last velocity
+        self.assertAlmostEqual(m.blocks.vel[0, 0], 2.0, delta=0.005)
+
+    def test_gravity_from_a_csv_file(self):
+        path = os.path.join(OUT, "g.csv")
+        with open(path, "w") as f:
+            f.write("time,factor\n0,0\n0.5,1 # full gravity from half a second\n")
+        m = model(LONE, "csv_gravity")
+        m.command(f"table g {path}\ngravity 0 -10 table=g")
+        m.cycle(1000)
+        # a = -20 t up to 0.5 s, then -10: v(1) = -2.5 - 5 = -7.5 m/s.
+        print(f"gravity table: vy = {m.blocks.vel[0, 1]:.4f} m/s at 1 s, closed form -7.5")
+        self.assertAlmostEqual(m.blocks.vel[0, 1], -7.5, delta=0.02)
+
+    def test_boundary_stress_and_velocity_follow_tables(self):
+        m = model(COLUMN, "column_tables")
+        m.command("timestep fixed 1e-5\ntable half 0,0 1e-3,0.5 2e-3,1")
+        m.command("boundary stress=0,-1e6,0 y=1.999,2.001 table=half")
+        top = m.nodes.pos[:, 1] > 1.999
+        m.cycle(100)  # t = 1 ms: half the stress, 0.5 MN/m on the 1 m top
+        self.assertAlmostEqual(m.nodes.applied[top, 1].sum(), -0.5e6, delta=1.0)
+        m.cycle(200)  # beyond the table's end: the whole stress, added once
+        self.assertAlmostEqual(m.nodes.applied[top, 1].sum(), -1e6, delta=1.0)
+        m.command("boundary velocity=0,-1 y=1.999,2.001 table=half")
+        m.cycle(1)
+        np.testing.assert_allclose(m.nodes.vel[top, 1], -1.0, atol=1e-12)
+
+    def test_table_errors(self):
+        m = model(LONE, "table_errors")
+        m.set_table("ramp", [0.0, 1.0], [0.0, 1.0])
+        with self.assertRaisesRegex(tessera.ScriptError, "table= goes with"):
+            m.command("fix block=1 table=ramp")
+        with self.assertRaisesRegex(tessera.ScriptError, "no table 'rmp' \\(did you mean 'ramp'"):
+            m.command("velocity block=1 vx=1 table=rmp")
+        with self.assertRaisesRegex(ValueError, "times must increase"):
+            m.set_table("bad", [0.0, 0.0], [1.0, 2.0])
+        with self.assertRaisesRegex(tessera.ScriptError, "is not a pair"):
+            m.command("table t 0,1 2")
+        path = os.path.join(OUT, "bad.csv")
+        with open(path, "w") as f:
+            f.write("0,1\n1,x\n")
+        with self.assertRaisesRegex(tessera.ScriptError, "bad.csv:2: write time,value"):
+            m.command(f"table t {path}")
+        m.cycle(10)
+        self.assertEqual(m.blocks.vel[0, 0], 0.0)  # nothing follows a table
+
+    def test_contact_force_histories(self):
+        m = model(STACK3, "contact_histories3")
+        m.command("history normal_force contact=1,2\nhistory shear_force contact=2,1 label=fs")
+        m.solve(ratio=1e-6)
+        h = m.histories
+        self.assertEqual(h.labels, ["normal_force_1_2", "fs"])
+        print(f"3D normal_force history: {h['normal_force_1_2'][-1]:.2f} N of 25506.00 N")
+        self.assertAlmostEqual(h["normal_force_1_2"][-1], 2600 * 9.81, delta=1.0)
+        self.assertLess(h["fs"][-1], 1e-3)
+        with self.assertRaisesRegex(tessera.ScriptError, "needs contact=A,B"):
+            m.command("history normal_force")
+        with self.assertRaisesRegex(tessera.ScriptError, "there is no block 7"):
+            m.command("history normal_force contact=1,7")
+        m2 = model(INCLINE, "contact_histories2")
+        m2.command("joint define smooth friction=40\ndamping local 0.8\n"
+                   "history normal_force contact=1,2\nhistory shear_force contact=1,2")
+        m2.solve(ratio=1e-6)
+        w, psi = 2500 * 9.81, math.radians(30)
+        self.assertAlmostEqual(m2.histories["normal_force_1_2"][-1], w * math.cos(psi),
+                               delta=1e-3 * w)
+        self.assertAlmostEqual(m2.histories["shear_force_1_2"][-1], w * math.sin(psi),
+                               delta=1e-3 * w)
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)
