@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "python_batch.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/io/state_io.hpp"
 #include "tessera/script/script.hpp"
@@ -45,6 +46,8 @@ int run_batch(const std::string& script, std::string out_dir, int threads, bool 
     const fs::path p(script);
     out_dir = (p.parent_path() / (p.stem().string() + "_out")).string();
   }
+  if (fs::path(script).extension() == ".py")
+    return run_python_batch(script, out_dir, threads, quiet);
   set_thread_count(threads);
   Interpreter interp(out_dir, [quiet](const std::string& s) {
     if (!quiet || s.find("warning") != std::string::npos) std::cout << s << std::endl;

@@ -1,5 +1,5 @@
 // The tessera executable: `tessera [FILE]` opens the desktop window (with a model script);
-// `tessera --batch FILE` runs a script headless.
+// `tessera --batch FILE` runs a script (or a Python file using the tessera module) headless.
 #include <CLI/CLI.hpp>
 #include <QApplication>
 #include <QGuiApplication>
@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
   int threads = 1;
   bool quiet = false;
   app.add_option("file", script, "Model script to open in the window")->check(CLI::ExistingFile);
-  app.add_option("--batch", batch, "Run a model script headless")->check(CLI::ExistingFile);
+  app.add_option("--batch", batch, "Run a model script (.tess) or a Python file (.py) headless")
+      ->check(CLI::ExistingFile);
   app.add_option("--out", out_dir, "Output folder (default: <script>_out beside the script)");
   app.add_option("--threads", threads, "Worker threads (results are identical at any count)")
       ->check(CLI::Range(1, 256));

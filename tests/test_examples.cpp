@@ -17,6 +17,7 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -904,6 +905,44 @@ class TestExamples : public QObject {
       }
     qInfo("state figure: %ld yielded samples", yielded);
     QVERIFY(yielded > 500);
+  }
+  // The Python example through `tessera --batch`: the wedge slides out below Hoek and Bray's
+  // limit friction angle (37.2 degrees) and stands above it; a Python error names its line.
+  void wedgeFrictionStudyInPython() {
+#ifdef TESSERA_PYTHON_MODULE
+    QTemporaryDir dir;
+    QProcess p;
+    const QString out = dir.path() + "/study";
+    p.start(TESSERA_EXE, {"--batch", QString(TESSERA_EXAMPLES) + "/wedge_friction_study.py",
+                          "--out", out, "--quiet"});
+    p.waitForFinished(600000);
+    QVERIFY2(p.exitCode() == 0, qPrintable(p.readAllStandardError()));
+    std::ifstream csv((out + "/wedge_friction.csv").toStdString());
+    std::string line;
+    std::getline(csv, line);
+    QCOMPARE(QString::fromStdString(line), QString("friction_deg,cycle,displacement_m"));
+    std::map<int, double> moved;  // the last sample of each friction angle
+    while (std::getline(csv, line)) {
+      int phi = 0, cycle = 0;
+      double d = 0;
+      QCOMPARE(std::sscanf(line.c_str(), "%d,%d,%lf", &phi, &cycle, &d), 3);
+      moved[phi] = d;
+    }
+    QCOMPARE(moved.size(), size_t(6));
+    for (const auto& [phi, d] : moved) {
+      qInfo("friction %d: the wedge moved %.4f m", phi, d);
+      QVERIFY(phi < 37 ? d > 0.01 : d < 1e-4);
+    }
+    QVERIFY(QFile::exists(out + "/friction_30/history.csv"));
+    QVERIFY(QFile::exists(out + "/friction_30/summary.json"));
+    const QString bad =
+        write_file(dir, "bad.py", "import tessera\nm = tessera.Model()\nm.command('frobnicate')\n");
+    const Run r = run_script(bad);
+    QCOMPARE(r.exit_code, 1);
+    QVERIFY2(r.err.contains(bad + ":3: unknown command 'frobnicate'"), qPrintable(r.err));
+#else
+    QSKIP("built without the Python module");
+#endif
   }
   void everyExampleIsChecked() {
     const QStringList checked{"block_on_incline.tess",

@@ -85,7 +85,7 @@ struct QuantityName {
   const char* name;
   bool block;
 };
-constexpr std::array<QuantityName, 32> kNames{{
+constexpr std::array<QuantityName, 34> kNames{{
     {HistoryQuantity::kXDisp, "xdisp", true},
     {HistoryQuantity::kYDisp, "ydisp", true},
     {HistoryQuantity::kXVel, "xvel", true},
@@ -118,7 +118,36 @@ constexpr std::array<QuantityName, 32> kNames{{
     {HistoryQuantity::kLinerMoment, "liner_moment", false},
     {HistoryQuantity::kLinerPressure, "liner_pressure", false},
     {HistoryQuantity::kSlipping, "slipping", false},
+    {HistoryQuantity::kNormalForce, "normal_force", false},
+    {HistoryQuantity::kShearForce, "shear_force", false},
 }};
+
+// The force between blocks a and b: the sum of their contacts' normal forces, and the size of
+// the resultant of what acts on a across the normals (3D: over the sub-contacts).
+double pair_force(const Model& m, size_t a, size_t b, bool normal) {
+  double fn = 0.0;
+  Vec3 shear = Vec3::Zero();
+  // f: the force on the contact's first block, n: its normal (towards that block).
+  const auto add = [&](uint32_t ca, uint32_t cb, double n_force, const Vec3& f, const Vec3& n) {
+    if (!((ca == a && cb == b) || (ca == b && cb == a))) return;
+    const double sign = ca == a ? 1.0 : -1.0;
+    fn += n_force;
+    shear += sign * (f - f.dot(n) * n);
+  };
+  if (m.dim == 3) {
+    for (const Contact3& c : m.contacts3) {
+      double sum = 0.0;
+      for (const SubContact& s : c.subs) sum += s.fn;
+      add(c.a, c.b, sum, c.force, c.normal);
+    }
+  } else {
+    const Contacts& C = m.contacts;
+    for (size_t i = 0; i < C.size(); ++i)
+      add(C.a[i], C.b[i], C.fn[i], Vec3(C.force[i].x(), C.force[i].y(), 0.0),
+          Vec3(C.normal[i].x(), C.normal[i].y(), 0.0));
+  }
+  return normal ? fn : shear.norm();
+}
 
 // A zone's stress component or principal stress (2D: in the plane, as the pictures show).
 double zone_value(const ZoneStress& t, HistoryQuantity q, bool three) {
@@ -176,6 +205,10 @@ bool is_cable_quantity(HistoryQuantity q) {
   return q == HistoryQuantity::kCableAxial || q == HistoryQuantity::kCableSlip;
 }
 
+bool is_contact_quantity(HistoryQuantity q) {
+  return q == HistoryQuantity::kNormalForce || q == HistoryQuantity::kShearForce;
+}
+
 bool is_liner_quantity(HistoryQuantity q) {
   return q == HistoryQuantity::kLinerThrust || q == HistoryQuantity::kLinerMoment ||
          q == HistoryQuantity::kLinerPressure;
@@ -220,6 +253,9 @@ std::string history_quantity_unit(HistoryQuantity q, int dim) {
       return dim == 3 ? "N" : "N/m";
     case HistoryQuantity::kCableSlip:
       return "m";
+    case HistoryQuantity::kNormalForce:
+    case HistoryQuantity::kShearForce:
+      return dim == 3 ? "N" : "N/m";
     case HistoryQuantity::kLinerThrust:
       return "N/m";
     case HistoryQuantity::kLinerMoment:
@@ -258,6 +294,11 @@ double history_value(const Model& m, const HistorySeries& s) {
     if (s.quantity == HistoryQuantity::kLinerPressure) return m.liners.pressure[i];
     return s.quantity == HistoryQuantity::kLinerThrust ? liner_thrust(m.liners, i)
                                                        : liner_moment(m.liners, i);
+  }
+  if (is_contact_quantity(s.quantity)) {
+    if (s.block < 0 || s.element < 0) return std::nan("");
+    return pair_force(m, static_cast<size_t>(s.block), static_cast<size_t>(s.element),
+                      s.quantity == HistoryQuantity::kNormalForce);
   }
   if (is_zone_quantity(s.quantity)) {
     const auto z = static_cast<size_t>(s.zone);

@@ -302,9 +302,14 @@ void delete_blocks(Model& m, const std::vector<size_t>& blocks) {
     v = std::move(out);
   };
   compact(m.det_x), compact(m.det_y), compact(m.det_theta);
-  for (auto& s : m.histories.series)
+  for (auto& s : m.histories.series) {
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+    // The second block of a force between two.
+    if (is_contact_quantity(s.quantity) && s.element >= 0)
+      s.element =
+          map[static_cast<size_t>(s.element)] >= 0 ? map[static_cast<size_t>(s.element)] : -2;
+  }
   m.touch();
   m.build_block_contacts();
 }

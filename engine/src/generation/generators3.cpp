@@ -89,9 +89,14 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
     ++added;
   }
   // Histories of cut blocks end; contacts are found afresh.
-  for (auto& s : m.histories.series)
+  for (auto& s : m.histories.series) {
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+    // The second block of a force between two.
+    if (is_contact_quantity(s.quantity) && s.element >= 0)
+      s.element =
+          map[static_cast<size_t>(s.element)] >= 0 ? map[static_cast<size_t>(s.element)] : -2;
+  }
   m.contacts3.clear();
   m.det_pos3.clear(), m.det_q3.clear();
   m.block_contact_begin.clear();
@@ -229,9 +234,14 @@ void delete_blocks3(Model& m, const std::vector<size_t>& selected) {
     if (map[b] >= 0) pos.push_back(m.det_pos3[b]), q.push_back(m.det_q3[b]);
   m.det_pos3 = std::move(pos), m.det_q3 = std::move(q);
   remap_cables3(m, map, node_map);
-  for (auto& s : m.histories.series)
+  for (auto& s : m.histories.series) {
     if (s.block >= 0)
       s.block = map[static_cast<size_t>(s.block)] >= 0 ? map[static_cast<size_t>(s.block)] : -2;
+    // The second block of a force between two.
+    if (is_contact_quantity(s.quantity) && s.element >= 0)
+      s.element =
+          map[static_cast<size_t>(s.element)] >= 0 ? map[static_cast<size_t>(s.element)] : -2;
+  }
   m.touch();
   m.block_contact_begin.clear();
 }

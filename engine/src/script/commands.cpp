@@ -36,7 +36,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"zone", &Interpreter::cmd_zone},         {"boundary", &Interpreter::cmd_boundary},
       {"insitu", &Interpreter::cmd_insitu},     {"model", &Interpreter::cmd_model},
       {"bolt", &Interpreter::cmd_bolt},         {"cable", &Interpreter::cmd_cable},
-      {"liner", &Interpreter::cmd_liner},
+      {"liner", &Interpreter::cmd_liner},       {"table", &Interpreter::cmd_table},
   };
   return h;
 }

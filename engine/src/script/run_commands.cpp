@@ -46,6 +46,8 @@ void Interpreter::run_with_progress(const std::function<bool(const Progress&)>& 
       if (!vtk_) vtk_ = std::make_unique<VtkSeries>((fs::path(out_dir_) / "vtk").string());
       vtk_->write(m);
     }
+    // Loads that follow tables (not in the trials of `solve fos`, which run on copies).
+    if (&m == &model_) apply_tables();
     if (observer_) observer_(m);
     if (m.cycle % 64 == 0) {
       const auto now = Clock::now();
@@ -297,6 +299,24 @@ void Interpreter::cmd_history(Args& a) {
     s.label = has_label         ? label
               : a.words.empty() ? s.label + "_" + std::to_string(sel[0] + 1)
                                 : s.label;
+  } else if (is_contact_quantity(s.quantity)) {
+    // The force between two blocks: contact=A,B (block numbers).
+    std::string pair;
+    if (!take(a, "contact", pair))
+      fail("a history of " + s.label + " needs contact=A,B (the numbers of the two blocks)");
+    const auto ids = split_top_level(pair);
+    if (ids.size() != 2) fail("write contact=A,B with the numbers of the two blocks");
+    int64_t index[2];
+    for (int k = 0; k < 2; ++k) {
+      const int64_t id = integer(ids[static_cast<size_t>(k)], 1);
+      index[k] = block_index(id);
+      if (index[k] < 0) fail("there is no block " + std::to_string(id));
+    }
+    if (index[0] == index[1]) fail("contact=A,B needs two different blocks");
+    s.block = static_cast<int32_t>(index[0]), s.element = static_cast<int32_t>(index[1]);
+    s.label += "_" + ids[0] + "_" + ids[1];
+    take(a, "label", s.label);
+    a.words.clear();
   } else if (is_zone_quantity(s.quantity)) {
     // A zone's stress: the zone whose centre is nearest the point.
     std::string at;

@@ -164,7 +164,7 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
   if (rollback_ && a.command != "call") backup = std::make_unique<Model>(model_);
   try {
     try {
-      (this->*(it->second))(a);
+      if (!follow_table(a)) (this->*(it->second))(a);
     } catch (const ScriptError&) {
       throw;
     } catch (const std::exception& e) {
@@ -180,14 +180,23 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
 }
 
 SavePoint Interpreter::save_point() const {
-  return {model_,  vars_,         title_,           stages_,           summary_,
-          limits_, vtk_interval_, overlap_checked_, proceed_on_errors_};
+  return {model_,
+          vars_,
+          title_,
+          stages_,
+          summary_,
+          limits_,
+          vtk_interval_,
+          overlap_checked_,
+          proceed_on_errors_,
+          tables_,
+          timed_};
 }
 
 void Interpreter::restore(const SavePoint& p) {
   model_ = p.model, vars_ = p.vars, title_ = p.title, stages_ = p.stages, summary_ = p.summary;
   limits_ = p.limits, vtk_interval_ = p.vtk_interval, overlap_checked_ = p.overlap_checked;
-  proceed_on_errors_ = p.proceed_on_errors;
+  proceed_on_errors_ = p.proceed_on_errors, tables_ = p.tables, timed_ = p.timed;
 }
 
 double Interpreter::num(const std::string& text) const {

@@ -43,7 +43,11 @@ enum class HistoryQuantity : uint8_t {
   kLinerMoment,
   kLinerPressure,  // at one node of a liner (its elements' thrust, compression positive, and
                    // moment at the node; the interface's pressure on the rock)
-  kSlipping        // of the model: contacts (3D: sub-contacts) slipping this cycle
+  kSlipping,       // of the model: contacts (3D: sub-contacts) slipping this cycle
+  kNormalForce,
+  kShearForce  // between two blocks (block and element hold their indices): the sum of their
+               // contacts' normal forces (compression positive) and the size of the resultant
+               // shear force
 };
 
 struct HistorySeries {
@@ -52,7 +56,8 @@ struct HistorySeries {
   int32_t node = -1;     // continuum node, when the block is deformable
   std::string label;     // CSV column heading
   int32_t zone = -1;     // zone for zone quantities (-1 once it is deleted)
-  int32_t element = -1;  // bolt element or cable node for support quantities (-1: gone)
+  int32_t element = -1;  // bolt element or cable node for support quantities (-1: gone), the
+                         // second block of a contact quantity (-2: deleted)
 };
 
 struct Histories {
@@ -83,6 +88,8 @@ bool is_bolt_quantity(HistoryQuantity q);
 bool is_cable_quantity(HistoryQuantity q);
 // Whether a quantity is a liner's (sampled at one node, picked by liner and point).
 bool is_liner_quantity(HistoryQuantity q);
+// Whether a quantity is a force between two blocks (picked by contact=A,B).
+bool is_contact_quantity(HistoryQuantity q);
 // Every quantity's keyword, for messages.
 std::vector<std::string> history_quantity_names();
 // Current value of one series.

@@ -60,6 +60,35 @@ struct StageRecord {
   bool converged = false;  // solve only
 };
 
+// One command line split into words; key=value words become keys.
+struct NodeBox;
+struct BoltProperties;
+
+struct Args {
+  std::string command;
+  std::vector<std::string> words;
+  std::vector<std::pair<std::string, std::string>> keys;
+  std::vector<bool> used;
+};
+
+// A time history (`table`): values at increasing times, linear between them and constant
+// beyond the first and last.
+struct Table {
+  std::vector<double> time, value;
+  double at(double t) const;
+};
+
+// A command that follows a table in time (written with table=NAME): run again between cycles
+// with its numbers times the table's value at the model's time, or, for loads that add up
+// (boundary stress and pressure), times the value's change since it last ran.
+struct TimedCommand {
+  Args args;  // without table=
+  std::string table, file;
+  int line = 0;
+  bool incremental = false;
+  double applied = 0.0;  // the table's value it last ran at
+};
+
 // What commands change in an interpreter (the model, variables, title, stages, checks, the
 // summary), kept to go back to: the GUI's undo. Output files already written stay.
 struct SavePoint {
@@ -71,17 +100,8 @@ struct SavePoint {
   CheckLimits limits;
   uint64_t vtk_interval = 0;
   bool overlap_checked = false, proceed_on_errors = false;
-};
-
-// One command line split into words; key=value words become keys.
-struct NodeBox;
-struct BoltProperties;
-
-struct Args {
-  std::string command;
-  std::vector<std::string> words;
-  std::vector<std::pair<std::string, std::string>> keys;
-  std::vector<bool> used;
+  std::map<std::string, Table> tables;
+  std::vector<TimedCommand> timed;
 };
 
 class Interpreter {
@@ -117,6 +137,10 @@ class Interpreter {
   void set_rollback(bool on) { rollback_ = on; }
   const std::vector<StageRecord>& stages() const { return stages_; }
   const std::string& title() const { return title_; }
+  // Defines (or replaces) a table; throws std::invalid_argument unless its times increase and
+  // every number is finite.
+  void set_table(const std::string& name, Table t);
+  const std::map<std::string, Table>& tables() const { return tables_; }
   // A copy of everything commands change, and a return to one.
   SavePoint save_point() const;
   void restore(const SavePoint& p);
@@ -188,6 +212,15 @@ class Interpreter {
   void cmd_boundary(Args&);
   void cmd_insitu(Args&);
   void cmd_reset(Args&);
+  // Tables and the commands that follow them (table_commands.cpp).
+  void cmd_table(Args&);
+  // Takes table=NAME off a command, runs it at the table's present value and keeps it to run
+  // between cycles; false when the command has no table=.
+  bool follow_table(const Args& a);
+  // Runs a timed command with its numbers times `scale`.
+  void run_scaled(const TimedCommand& t, double scale);
+  // Runs again the timed commands whose table's value has changed (between two cycles).
+  void apply_tables();
   // 3D models (commands3.cpp).
   void cmd_dimension(Args&);
   void cmd_block3(Args&);
@@ -287,6 +320,8 @@ class Interpreter {
   std::string text_;  // the line being run
   double progress_seconds_ = 2.0;
   RunSummary summary_;
+  std::map<std::string, Table> tables_;
+  std::vector<TimedCommand> timed_;
   friend struct ScriptAccess;
 };
 
