@@ -108,6 +108,33 @@ class TestScriptErrors : public QObject {
     QVERIFY(has(error_of("joint define j kn=1e9 ks=1e9 friction=30 roughness=1e-3"),
                 "belong to law=cy"));
   }
+  void badTablesAreNamed() {
+    const std::string two = std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\n";
+    QVERIFY(
+        has(error_of("table t 0,1 0,2"), "test:1: table 't': the times must increase (point 2)"));
+    QVERIFY(has(error_of("table t 0,1 2"), "test:1: '2' is not a pair T,V"));
+    QVERIFY(has(error_of(two + "table ramp 0,0 1,1\nfix block=1 table=ramp"),
+                "test:6: table= goes with 'velocity', 'load',"));
+    QVERIFY(has(error_of(two + "table ramp 0,0 1,1\nload block=1 fx=1 table=rmp"),
+                "test:6: there is no table 'rmp' (did you mean 'ramp'?)"));
+    // A file's bad line is named by the file and its line.
+    ScriptRun r;
+    { std::ofstream(r.path("motion.csv")) << "time,velocity\n0,0\n0.5,x\n"; }
+    try {
+      r.run("table shake " + r.path("motion.csv"));
+      QFAIL("a bad table file was read");
+    } catch (const ScriptError& e) {
+      QVERIFY(has(e.what(), "motion.csv:3: write time,value"));
+    }
+  }
+  void badLoadsAreNamed() {
+    const std::string two = std::string(kBase) + "block 0,0 1,0 1,1 0,1 material=rock\n";
+    QVERIFY(has(error_of(two + "load block=1"), "test:5: 'load' needs fx=, fy= (N/m)"));
+    QVERIFY(has(error_of(two + "load block=1 fx=1 omega=2"), "test:5: 'omega' is not a keyword"));
+    QVERIFY(has(error_of(two + "material define rock density=2600 E=1e9 nu=0.25\n"
+                               "zone generate edge=0.5\nload block=1 fx=1"),
+                "test:7: block 1 is deformable: load its nodes"));
+  }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
     QVERIFY(has(e, "test:1:"));

@@ -109,6 +109,27 @@ void copy_catalogue(const Model& m, Snapshot& s) {
     if (B3.fixity[b] & kFix3Rot) held.push_back({"rotation", B3.fixed_w[b].norm()});
     add_block(B3.id[b], held, " rad/s", B3.fixity[b] & kFix3Rot);
   }
+  // Loads ('load'): one entry per distinct load, listing the blocks that carry it.
+  const auto add_load = [&](int id, const std::string& force, const std::string& moment) {
+    auto& slot = kinds["load|" + force + "|" + moment];
+    if (slot.second.empty()) slot.first = Entry{"load", {{"force", force}, {"moment", moment}}};
+    slot.second.push_back(id);
+  };
+  const auto vec_text = [](std::initializer_list<double> v, const char* unit) {
+    std::string t;
+    for (double x : v) t += (t.empty() ? "" : ", ") + number(x);
+    return "(" + t + ") " + unit;
+  };
+  for (size_t b = 0; b < B.size(); ++b)
+    if (B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0)
+      add_load(B.id[b], vec_text({B.load_fx[b], B.load_fy[b]}, "N/m"),
+               number(B.load_m[b]) + " N m/m");
+  for (size_t b = 0; b < B3.size(); ++b) {
+    const Vec3 &f = B3.load_force[b], &t = B3.load_moment[b];
+    if (f != Vec3::Zero() || t != Vec3::Zero())
+      add_load(B3.id[b], vec_text({f.x(), f.y(), f.z()}, "N"),
+               vec_text({t.x(), t.y(), t.z()}, "N m"));
+  }
   for (auto& [key, kind] : kinds) {
     auto& [e, ids] = kind;
     std::string list;

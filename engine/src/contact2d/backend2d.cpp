@@ -30,15 +30,16 @@ void prepare2d(Model& m) {
   if (m.block_contact_begin.size() != m.blocks.size() + 1) m.build_block_contacts();
 }
 
-// Gravity plus contact forces, gathered in a fixed order per block.
+// Gravity, loads and contact forces, gathered in a fixed order per block.
 void resultants2d(Model& m) {
   Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   const Vec2 g = m.settings.gravity;
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
-      double fx = B.mass[b] * g.x(), fy = B.mass[b] * g.y(), mz = 0.0;
-      double applied = B.mass[b] * g.norm();
+      double fx = B.mass[b] * g.x() + B.load_fx[b], fy = B.mass[b] * g.y() + B.load_fy[b];
+      double mz = B.load_m[b];
+      double applied = B.mass[b] * g.norm() + std::hypot(B.load_fx[b], B.load_fy[b]);
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t i = m.block_contacts[k] >> 1;
         const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;

@@ -13,8 +13,8 @@ size_t Blocks::add(const std::vector<Vec2>& pts, double rounding, double density
   x.push_back(props.centroid.x());
   y.push_back(props.centroid.y());
   theta.push_back(0.0);
-  for (auto* v :
-       {&vx, &vy, &omega, &fx, &fy, &moment, &applied, &fixed_vx, &fixed_vy, &fixed_omega})
+  for (auto* v : {&vx, &vy, &omega, &fx, &fy, &moment, &applied, &fixed_vx, &fixed_vy, &fixed_omega,
+                  &load_fx, &load_fy, &load_m})
     v->push_back(0.0);
   x_ref.push_back(props.centroid.x());
   y_ref.push_back(props.centroid.y());
@@ -120,10 +120,11 @@ void Blocks::set_outline(size_t b, const std::vector<Vec2>& pts, double rounding
 namespace tessera {
 
 std::vector<std::vector<double>*> Blocks::block_doubles() {
-  return {&x,           &y,       &theta,     &vx,          &vy,       &omega,
-          &fx,          &fy,      &moment,    &applied,     &x_ref,    &y_ref,
-          &mass,        &inertia, &inv_mass,  &inv_inertia, &fixed_vx, &fixed_vy,
-          &fixed_omega, &area,    &perimeter, &bound_radius};
+  return {&x,           &y,       &theta,     &vx,           &vy,       &omega,
+          &fx,          &fy,      &moment,    &applied,      &x_ref,    &y_ref,
+          &mass,        &inertia, &inv_mass,  &inv_inertia,  &fixed_vx, &fixed_vy,
+          &fixed_omega, &area,    &perimeter, &bound_radius, &load_fx,  &load_fy,
+          &load_m};
 }
 
 void Blocks::shrink_to_fit() {

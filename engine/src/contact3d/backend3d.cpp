@@ -81,7 +81,7 @@ void joint_forces3d(Model& m) {
     update_cables(m, m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha);
 }
 
-// Gravity plus contact forces, gathered in a fixed order per block; slave pieces hand theirs
+// Gravity, loads and contact forces, gathered in a fixed order per block; slave pieces hand theirs
 // to their masters (in block order: deterministic).
 void resultants3d(Model& m) {
   Blocks3& B = m.blocks3;
@@ -90,8 +90,8 @@ void resultants3d(Model& m) {
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
       const double mass = B.body[b].mass;
-      Vec3 f = mass * g, t = Vec3::Zero();
-      double applied = mass * g.norm();
+      Vec3 f = mass * g + B.load_force[b], t = B.load_moment[b];
+      double applied = mass * g.norm() + B.load_force[b].norm();
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const Contact3& c = m.contacts3[m.block_contacts[k] >> 1];
         if (m.block_contacts[k] & 1)

@@ -18,6 +18,7 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.ref_q.push_back(src.ref_q[b]);
   dst.fixity.push_back(src.fixity[b]);
   dst.fixed_v.push_back(src.fixed_v[b]), dst.fixed_w.push_back(src.fixed_w[b]);
+  dst.load_force.push_back(src.load_force[b]), dst.load_moment.push_back(src.load_moment[b]);
   dst.volume.push_back(src.volume[b]), dst.surface.push_back(src.surface[b]);
   dst.bound_radius.push_back(src.bound_radius[b]);
   dst.group.push_back(src.group[b]), dst.material.push_back(src.material[b]);
@@ -74,6 +75,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   force.push_back(Vec3::Zero()), torque.push_back(Vec3::Zero()), applied.push_back(0.0);
   ref.push_back(s.centroid), ref_q.push_back(rb.orientation);
   fixity.push_back(0), fixed_v.push_back(Vec3::Zero()), fixed_w.push_back(Vec3::Zero());
+  load_force.push_back(Vec3::Zero()), load_moment.push_back(Vec3::Zero());
   volume.push_back(s.volume);
   group.push_back(group_id), material.push_back(material_id);
   id.push_back(static_cast<int>(b) + 1);
@@ -189,6 +191,14 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
   }
   if (!(mass > 0.0)) throw std::invalid_argument("joined blocks need a material with a density");
   centre /= mass;
+  // The bodies' loads move to the new centroid, with the moment that keeps them where they act.
+  Vec3 load = Vec3::Zero(), load_m = Vec3::Zero();
+  for (size_t p : pieces)
+    if (!is_slave(p)) {
+      load += load_force[p];
+      load_m += load_moment[p] + (body[p].position - centre).cross(load_force[p]);
+      load_force[p] = load_moment[p] = Vec3::Zero();
+    }
   Mat3 inertia = Mat3::Zero();
   for (size_t i = 0; i < pieces.size(); ++i) {
     const Vec3 d = props[i].centroid - centre;
@@ -223,6 +233,7 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
   }
   body[m0] = rb;
   ref[m0] = centre, ref_q[m0] = rb.orientation;
+  load_force[m0] = load, load_moment[m0] = load_m;
   for (size_t p : pieces) bound_radius[p] = reach;
 }
 

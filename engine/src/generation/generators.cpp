@@ -164,6 +164,11 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   if (!m.liners.empty())
     throw ModelError("cut and join blocks before placing liners (liner '" +
                      m.liners.liners[0].name + "' is anchored in the blocks as they are)");
+  for (size_t b = 0; b < old.size(); ++b)
+    if (in[b] && (old.load_fx[b] != 0.0 || old.load_fy[b] != 0.0 || old.load_m[b] != 0.0))
+      throw ModelError("cut and join blocks before loading them (block " +
+                       std::to_string(old.id[b]) + " carries a load: 'load block=" +
+                       std::to_string(old.id[b]) + " fx=0 fy=0 moment=0' takes it off)");
   m.blocks = Blocks{};
   auto copy_state = [&](size_t parent) {
     Blocks& B = m.blocks;

@@ -70,6 +70,11 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t i = 0; i < owner.size(); ++i)
     if (piece_count[i] > 1) doomed[owner[i]] = 1;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (doomed[b] && (B.load_force[b] != Vec3::Zero() || B.load_moment[b] != Vec3::Zero()))
+      throw ModelError("cut blocks before loading them (block " + std::to_string(B.id[b]) +
+                       " carries a load: 'load block=" + std::to_string(B.id[b]) +
+                       " fx=0 fy=0 fz=0 mx=0 my=0 mz=0' takes it off)");
   const Blocks3 old = B;
   std::vector<int> map = B.remove(doomed);
   for (size_t b = 0; b < B.size(); ++b) B.id[b] = static_cast<int>(b) + 1;

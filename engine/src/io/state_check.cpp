@@ -112,6 +112,7 @@ void check_blocks3(Checker& c, const Model& m) {
   c.size(B.ref, n, "3D reference positions"), c.size(B.ref_q, n, "3D reference orientations");
   c.size(B.fixity, n, "3D fixity"), c.size(B.fixed_v, n, "3D fixed velocities");
   c.size(B.fixed_w, n, "3D fixed spins"), c.size(B.volume, n, "3D volumes");
+  c.size(B.load_force, n, "3D loads"), c.size(B.load_moment, n, "3D load moments");
   c.size(B.surface, n, "3D surfaces"), c.size(B.bound_radius, n, "3D block radii");
   c.size(B.group, n, "3D groups"), c.size(B.material, n, "3D materials");
   c.size(B.id, n, "3D block numbers"), c.size(B.master, n, "3D masters");

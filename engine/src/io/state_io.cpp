@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 15;
+constexpr uint32_t kVersion = 16;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
@@ -228,6 +228,7 @@ void fields(IO& io, auto& m) {
   auto& B3 = m.blocks3;
   io.vec(B3.body), io.vec(B3.omega), io.vec(B3.force), io.vec(B3.torque), io.vec(B3.applied);
   io.vec(B3.ref), io.vec(B3.ref_q), io.vec(B3.fixity), io.vec(B3.fixed_v), io.vec(B3.fixed_w);
+  io.vec(B3.load_force), io.vec(B3.load_moment);
   io.vec(B3.volume), io.vec(B3.surface), io.vec(B3.bound_radius), io.vec(B3.vert_begin);
   io.vec(B3.local_vertex), io.vec(B3.world_vertex), io.vec(B3.face_begin), io.vec(B3.fv_begin);
   io.vec(B3.face_vert), io.vec(B3.local_normal), io.vec(B3.local_offset), io.vec(B3.world_normal),

@@ -37,6 +37,7 @@ const std::map<std::string, Interpreter::Handler>& Interpreter::handlers() {
       {"insitu", &Interpreter::cmd_insitu},     {"model", &Interpreter::cmd_model},
       {"bolt", &Interpreter::cmd_bolt},         {"cable", &Interpreter::cmd_cable},
       {"liner", &Interpreter::cmd_liner},       {"table", &Interpreter::cmd_table},
+      {"load", &Interpreter::cmd_load},
   };
   return h;
 }

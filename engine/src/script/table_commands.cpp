@@ -116,8 +116,8 @@ bool Interpreter::follow_table(const Args& a) {
                                [](const auto& kv) { return kv.first == "table"; });
   if (it == a.keys.end()) return false;
   const std::string& c = a.command;
-  if (c != "velocity" && c != "boundary" && c != "gravity")
-    fail("table= goes with 'velocity', 'boundary velocity|stress|pressure' and 'gravity'");
+  if (c != "velocity" && c != "boundary" && c != "gravity" && c != "load")
+    fail("table= goes with 'velocity', 'load', 'boundary velocity|stress|pressure' and 'gravity'");
   const auto has = [&](const char* key) {
     return std::any_of(a.keys.begin(), a.keys.end(),
                        [&](const auto& kv) { return kv.first == key; });
@@ -154,7 +154,8 @@ void Interpreter::run_scaled(const TimedCommand& t, double scale) {
   Args a = t.args;
   for (auto& [key, value] : a.keys)
     if (key == "vx" || key == "vy" || key == "vz" || key == "omega" || key == "velocity" ||
-        key == "stress" || key == "pressure")
+        key == "stress" || key == "pressure" || key == "fx" || key == "fy" || key == "fz" ||
+        key == "mx" || key == "my" || key == "mz" || key == "moment")
       value = scaled(value);
   if (a.command == "gravity")
     for (std::string& w : a.words) w = scaled(w);

@@ -57,6 +57,9 @@ void ordered_outline(const ZoneMesh& mesh, const std::vector<Vec2>& poly,
 void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading) {
   Blocks& B = m.blocks;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  if (B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0)
+    throw std::invalid_argument(
+        "it carries a load ('load'): zone it first, then load its nodes ('boundary stress')");
   if (!m.support.empty() || !m.cables.empty() || !m.liners.empty())
     throw std::invalid_argument(
         "bolts or cables are placed already: zone blocks before placing support");

@@ -82,6 +82,10 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGra
                               const std::atomic<bool>* stop, bool quadratic) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
+  const size_t body = static_cast<size_t>(B.master[b]);
+  if (B.load_force[body] != Vec3::Zero() || B.load_moment[body] != Vec3::Zero())
+    throw std::invalid_argument(
+        "it carries a load ('load'): zone it first, then load its nodes ('boundary stress')");
   if (!m.cables3.empty())
     throw std::invalid_argument("cables are placed already: zone blocks before placing support");
   // The body's pieces (one for a convex block), in block order: one mesh for all of them.

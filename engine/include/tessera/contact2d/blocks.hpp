@@ -33,6 +33,8 @@ struct Blocks {
   // Fixity bits and the velocities prescribed on fixed degrees of freedom.
   std::vector<uint8_t> fixity;
   std::vector<double> fixed_vx, fixed_vy, fixed_omega;
+  // Loads applied at the centroid (the 'load' command): force (N/m) and moment (N m/m).
+  std::vector<double> load_fx, load_fy, load_m;
   // Vertices of block b are [vert_begin[b], vert_begin[b+1]) in the vertex arrays.
   std::vector<uint32_t> vert_begin{0};
   // Per vertex, in the block frame: corner position and rounded-arc centre.

@@ -39,6 +39,8 @@ struct Blocks3 {
   std::vector<Eigen::Quaterniond> ref_q;
   std::vector<uint8_t> fixity;
   std::vector<Vec3> fixed_v, fixed_w;
+  // Loads applied at the body's centroid (the 'load' command; on masters only): force, moment.
+  std::vector<Vec3> load_force, load_moment;
   // Geometry: volume, surface area, largest centroid-to-vertex distance.
   std::vector<double> volume, surface, bound_radius;
   // Vertices of block b are [vert_begin[b], vert_begin[b+1]).

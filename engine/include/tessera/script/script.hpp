@@ -166,6 +166,7 @@ class Interpreter {
   void cmd_fix(Args&);
   void cmd_free(Args&);
   void cmd_velocity(Args&);
+  void cmd_load(Args&);
   void cmd_gravity(Args&);
   void cmd_damping(Args&);
   void cmd_timestep(Args&);
