@@ -138,6 +138,20 @@ const Spec kBlocks[] = {
      [](const Model& m, py::handle o) {
        return m.dim == 3 ? whole(m.blocks3.fixity, o) : whole(m.blocks.fixity, o);
      }},
+    {"load",
+     "loads at the centroids ('load', set_force) (n, dim): 2D N/m (copy); 3D N, on the "
+     "body's first piece (view)",
+     [](const Model& m, py::handle o) {
+       if (m.dim == 3) return whole(m.blocks3.load_force, o);
+       const Blocks& B = m.blocks;
+       return copy<double>(B.size(), 2, [&](size_t b, double* row) {
+         row[0] = B.load_fx[b], row[1] = B.load_fy[b];
+       });
+     }},
+    {"load_moment", "moments of the loads: 2D (n,) N m/m; 3D (n, 3) N m (view)",
+     [](const Model& m, py::handle o) {
+       return m.dim == 3 ? whole(m.blocks3.load_moment, o) : whole(m.blocks.load_m, o);
+     }},
 };
 
 // 3D contacts: sums over each contact's sub-contacts.

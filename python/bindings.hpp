@@ -3,6 +3,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -22,6 +23,9 @@ struct PyModel {
     uint64_t every = 1;
   };
   PyModel(const std::string& out, bool quiet);
+  // The model of an interpreter someone else owns and observes (the window's console): its
+  // owner calls observe() after each cycle and writes its results.
+  explicit PyModel(Interpreter& borrowed);
   ~PyModel();
   PyModel(const PyModel&) = delete;
   PyModel& operator=(const PyModel&) = delete;
@@ -36,10 +40,14 @@ struct PyModel {
   // Writes the results folder (Interpreter::finish).
   void finish();
 
-  std::unique_ptr<Interpreter> interp;
+  std::unique_ptr<Interpreter> owned;  // null when borrowed
+  Interpreter* interp = nullptr;
   std::vector<Callback> callbacks;
   // The Python error a callback raised during a run, raised again once the run has unwound.
   std::optional<py::error_already_set> pending;
+  // The window's Stop (borrowed models): a call that finds it set raises KeyboardInterrupt, so a
+  // Python loop of runs ends with the run it stopped.
+  const std::atomic<bool>* stop = nullptr;
   bool in_callback = false;
   bool quiet = false;
   // Changed since its results were last written: they are written at the program's exit.
@@ -61,5 +69,9 @@ struct HistoryGroup : Group {};
 
 // Defines the array groups' classes (arrays.cpp).
 void bind_arrays(py::module_& m);
+
+// Defines the module's contents (module.cpp): the extension module `tessera` and the window's
+// embedded one are the same.
+void define_module(py::module_& mod);
 
 }  // namespace tessera::python

@@ -105,7 +105,7 @@ std::set<PyModel*>& live_models() {
 // were last written writes them, as a batch run does.
 void finish_all() {
   for (PyModel* m : live_models()) {
-    if (!m->unwritten) continue;
+    if (!m->unwritten || !m->owned) continue;
     try {
       m->finish();
     } catch (const std::exception& e) {
@@ -117,16 +117,19 @@ void finish_all() {
 }  // namespace
 
 PyModel::PyModel(const std::string& out, bool be_quiet)
-    : interp(std::make_unique<Interpreter>(out,
-                                           [this](const std::string& s) {
-                                             if (!quiet || s.find("warning") != std::string::npos)
-                                               py::print(s, py::arg("flush") = true);
-                                           })),
+    : owned(std::make_unique<Interpreter>(out,
+                                          [this](const std::string& s) {
+                                            if (!quiet || s.find("warning") != std::string::npos)
+                                              py::print(s, py::arg("flush") = true);
+                                          })),
+      interp(owned.get()),
       quiet(be_quiet) {
   interp->set_progress_interval(quiet ? 0.0 : 2.0);
   interp->set_observer([this](const Model& m) { observe(m); });
   live_models().insert(this);
 }
+
+PyModel::PyModel(Interpreter& borrowed) : interp(&borrowed) {}
 
 PyModel::~PyModel() {
   live_models().erase(this);
@@ -150,6 +153,10 @@ void PyModel::run(const std::string& text) {
     std::istringstream in(text);
     std::string one;
     for (int i = 0; std::getline(in, one); ++i) interp->execute(one, file, line + i);
+    if (stop && stop->load()) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+      throw py::error_already_set();
+    }
   } catch (const ScriptError&) {
     if (before) interp->restore(*before);
     if (pending) {
@@ -190,7 +197,7 @@ void PyModel::observe(const Model& m) {
   }
 }
 
-PYBIND11_MODULE(tessera, mod) {
+void define_module(py::module_& mod) {
   mod.doc() = "Tessera, a distinct element code: models, their cycle and results as numpy arrays";
   // ScriptError(RuntimeError) with the interpreter's text and its parts: file, line, message.
   // The class lives as long as the process (no reference is dropped at exit).
@@ -286,6 +293,43 @@ PYBIND11_MODULE(tessera, mod) {
           py::arg("v"), py::arg("blocks") = py::none(),
           "Sets block velocities (rows for the blocks numbered, or all): the velocity of a free "
           "degree of freedom, the prescribed one of a fixed one (the 'velocity' command)")
+      .def(
+          "set_force",
+          [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& f,
+             std::optional<std::vector<int>> blocks,
+             std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> moment) {
+            const Model& m = s.model();
+            std::vector<int> ids = blocks ? *blocks : std::vector<int>{};
+            if (!blocks)
+              for (size_t b = 0; b < m.block_count(); ++b)
+                ids.push_back(m.dim == 3 ? m.blocks3.id[b] : m.blocks.id[b]);
+            const size_t d = m.dim, dm = m.dim == 3 ? 3 : 1;
+            const std::vector<double> rows = rows_of(f, ids.size(), d, "set_force");
+            std::vector<double> turn;
+            if (moment && dm == 1 && moment->ndim() == 0)
+              turn.assign(ids.size(), *moment->data());
+            else if (moment && dm == 1 && moment->ndim() == 1 &&
+                     static_cast<size_t>(moment->shape(0)) == ids.size())
+              turn.assign(moment->data(), moment->data() + ids.size());
+            else if (moment)
+              turn = rows_of(*moment, ids.size(), dm, "set_force(moment=)");
+            std::vector<std::string> lines;
+            for (size_t i = 0; i < ids.size(); ++i) {
+              std::string l = "load block=" + std::to_string(ids[i]);
+              for (size_t k = 0; k < d; ++k)
+                l += std::string(" f") + "xyz"[k] + "=" + number(rows[i * d + k]);
+              if (!turn.empty() && dm == 1) l += " moment=" + number(turn[i]);
+              if (!turn.empty() && dm == 3)
+                for (size_t k = 0; k < 3; ++k)
+                  l += std::string(" m") + "xyz"[k] + "=" + number(turn[i * 3 + k]);
+              lines.push_back(l);
+            }
+            s.run_lines(lines);
+          },
+          py::arg("f"), py::arg("blocks") = py::none(), py::arg("moment") = py::none(),
+          "Constant loads at the centroids of rigid blocks (rows for the blocks numbered, or "
+          "all): force (n, dim) and, if given, moment (2D (n,) or a number, 3D (n, 3)); they "
+          "replace the blocks' loads before (the 'load' command)")
       .def(
           "set_node_force",
           [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& f,

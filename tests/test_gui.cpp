@@ -1621,6 +1621,63 @@ class TestGui : public QObject {
     QCOMPARE(line->text(), QString());
   }
 
+  // The console's Python: `m` is the window's model. Printed output reaches the log; a
+  // statement over several lines runs when an empty line ends it; an on_cycle callback runs
+  // during the window's own step; an exception is shown with the model as it was; Python lines
+  // are journaled as comments and undone as one command.
+  void pythonConsoleDrivesTheModel() {
+    MainWindow w;
+    w.show();
+    if (w.console()->findChild<QToolButton*>("pythonMode")->isHidden())
+      QSKIP("this build has no Python");
+    w.openScript(script_);
+    QVERIFY(wait_finished(w));
+    ConsoleWidget* console = w.console();
+    QLineEdit* line = console->input();
+    const auto type = [&](const QString& text) {
+      line->setText(text);
+      QTest::keyClick(line, Qt::Key_Return);
+    };
+    console->setPythonMode(true);
+    type("print('blocks', len(m.blocks.id), 'dim', m.dim)");
+    QVERIFY(wait_finished(w));
+    QVERIFY(console->text().contains("blocks 3 dim 2"));
+    // A function over three lines: nothing runs until the empty line.
+    type("def counter(model):");
+    QTRY_VERIFY(!w.busy());
+    type("    seen.append(model.cycles)");
+    QTRY_VERIFY(!w.busy());
+    type("");
+    QVERIFY(wait_finished(w));
+    type("seen = []; m.on_cycle(counter, every=10)");
+    QVERIFY(wait_finished(w));
+    const uint64_t start = w.snapshot()->cycle;
+    console->setPythonMode(false);
+    type("step 30");
+    QVERIFY(wait_finished(w));
+    console->setPythonMode(true);
+    type("print('calls', len(seen))");
+    QVERIFY(wait_finished(w));
+    QVERIFY(console->text().contains("calls 3"));
+    // An exception after a run: the traceback in the log, the model back where it was.
+    type("m.cycle(20); 1/0");
+    QVERIFY(!wait_finished(w));
+    QVERIFY(console->text().contains("ZeroDivisionError: division by zero"));
+    QCOMPARE(w.snapshot()->cycle, start + 30);
+    QVERIFY(w.errorBox() && w.errorBox()->text().contains("ZeroDivisionError"));
+    w.errorBox()->close();
+    // A run from Python, journaled as comments, then undone.
+    type("m.cycle(5)");
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->cycle, start + 35);
+    QVERIFY(w.journal().contains("; python>     seen.append(model.cycles)"));
+    QCOMPARE(w.journal().last(), QString("; python> m.cycle(5)"));
+    w.undo();
+    QVERIFY(wait_finished(w));
+    QCOMPARE(w.snapshot()->cycle, start + 30);
+    QCOMPARE(w.journal().last(), QString("; python> print('calls', len(seen))"));
+  }
+
   // A bad command and a diverging run: an error in the console and a message, the model as
   // it was before the command.
   void badCommandLeavesModel() {

@@ -91,7 +91,8 @@ class Incline(unittest.TestCase):
         b = m.blocks
         self.assertEqual(len(b), 2)
         shapes = {"id": (2,), "group": (2,), "pos": (2, 2), "vel": (2, 2), "disp": (2, 2),
-                  "rot": (2,), "angvel": (2,), "mass": (2,), "fixity": (2,)}
+                  "rot": (2,), "angvel": (2,), "mass": (2,), "fixity": (2,), "load": (2, 2),
+                  "load_moment": (2,)}
         self.assertEqual(sorted(tessera.Blocks.names), sorted(shapes))
         for name, shape in shapes.items():
             self.assertEqual(getattr(b, name).shape, shape, name)
@@ -253,6 +254,22 @@ class Commands(unittest.TestCase):
             m.set_velocity(np.zeros((2, 2)), blocks=[2, 99])
         np.testing.assert_array_equal(m.blocks.vel[1], [1.0, 2.0])  # the first row was taken back
 
+    def test_set_force(self):
+        m = self.m
+        m.set_force([10.0, -20.0], blocks=[2], moment=3.0)
+        np.testing.assert_array_equal(m.blocks.load[1], [10.0, -20.0])
+        self.assertEqual(m.blocks.load_moment[1], 3.0)
+        m.set_force(np.zeros((2, 2)), moment=np.array([0.0, 1.5]))
+        np.testing.assert_array_equal(m.blocks.load, np.zeros((2, 2)))
+        self.assertEqual(m.blocks.load_moment[1], 1.5)
+        with self.assertRaisesRegex(ValueError, r"shaped \(1, 2\) or \(2,\), not \(3,\)"):
+            m.set_force([1.0, 2.0, 3.0], blocks=[2])
+        with self.assertRaisesRegex(ValueError, "set_force\\(moment=\\)"):
+            m.set_force([1.0, 2.0], blocks=[2], moment=[1.0, 2.0])
+        with self.assertRaisesRegex(tessera.ScriptError, "'load' needs"):
+            m.command("load block=2")
+        self.assertEqual(m.blocks.load_moment[1], 1.5)  # nothing changed by the failures
+
     def test_properties_gravity_variables(self):
         m = self.m
         m.set_gravity([0.0, -5.0])
@@ -322,12 +339,22 @@ class Stack3D(unittest.TestCase):
         np.testing.assert_allclose(np.sort(s.point[:, 0]), [0, 0, 1, 1], atol=1e-6)
         self.assertTrue(np.all(s.contact == 0))
 
+    def test_pressed_cube_joint_carries_weight_and_load(self):
+        m = model(STACK3, "stack3_load")
+        m.set_force([[0.0, 0.0, 0.0], [0.0, 0.0, -1e4]], moment=np.zeros((2, 3)))
+        np.testing.assert_array_equal(m.blocks.load[1], [0.0, 0.0, -1e4])
+        m.solve(ratio=1e-6)
+        carried, expected = m.subcontacts.normal_force.sum(), 2600 * 9.81 + 1e4
+        print(f"3D cube pressed by 10 kN: sub-contacts carry {carried:.2f} N of {expected:.2f} N")
+        self.assertAlmostEqual(carried, expected, delta=1e-4 * expected)
+
     def test_arrays_3d(self):
         m = self.m
         b, c = m.blocks, m.contacts
         self.assertEqual(m.dim, 3)
         for name, shape in {"pos": (2, 3), "vel": (2, 3), "disp": (2, 3), "rot": (2,),
-                            "angvel": (2, 3), "mass": (2,), "fixity": (2,)}.items():
+                            "angvel": (2, 3), "mass": (2,), "fixity": (2,), "load": (2, 3),
+                            "load_moment": (2, 3)}.items():
             self.assertEqual(getattr(b, name).shape, shape, name)
         self.assertTrue(np.shares_memory(b.pos, m.blocks.pos))  # 3D rigid blocks: a view
         np.testing.assert_allclose(b.pos[1], [0.5, 0.5, 0.5], atol=1e-4)

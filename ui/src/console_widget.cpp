@@ -2,33 +2,72 @@
 #include "tessera/ui/console_widget.hpp"
 
 #include <QFontDatabase>
+#include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QVBoxLayout>
+
+#include "python_console.hpp"
 
 namespace tessera::ui {
 
 ConsoleWidget::ConsoleWidget(QWidget* parent)
-    : QWidget(parent), log_(new QPlainTextEdit(this)), input_(new QLineEdit(this)) {
+    : QWidget(parent),
+      log_(new QPlainTextEdit(this)),
+      input_(new QLineEdit(this)),
+      python_(new QToolButton(this)),
+      prompt_(new QLabel(">", this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
   layout->addWidget(log_);
-  layout->addWidget(input_);
+  auto* row = new QHBoxLayout;
+  row->addWidget(python_);
+  row->addWidget(prompt_);
+  row->addWidget(input_);
+  layout->addLayout(row);
+  python_->setText("Py");
+  python_->setObjectName("pythonMode");
+  python_->setCheckable(true);
+  python_->setToolTip(
+      "Python: lines run as at Python's prompt, with m the model (m.blocks.pos, m.cycle(100), "
+      "m.command(\"...\"))");
+  python_->setVisible(python_console_available());
+  connect(python_, &QToolButton::toggled, this, &ConsoleWidget::setPythonMode);
   log_->setReadOnly(true);
   log_->setMaximumBlockCount(20000);
   const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
   log_->setFont(mono);
   input_->setFont(mono);
-  input_->setPlaceholderText(
-      "Type a command (e.g. step 1000, solve, figure view.png) and press Enter");
+  prompt_->setFont(mono);
+  setPythonMode(false);
   input_->installEventFilter(this);
   connect(input_, &QLineEdit::returnPressed, this, [this] {
-    const QString line = input_->text().trimmed();
-    if (line.isEmpty()) return;
-    typed_.append(line);
+    // Python keeps its indentation; an empty line ends an open statement.
+    const bool py = pythonMode();
+    QString line = py ? input_->text() : input_->text().trimmed();
+    while (py && line.endsWith(' ')) line.chop(1);
+    if (line.trimmed().isEmpty() && !(py && more_)) return;
+    if (!line.isEmpty()) typed_.append(line);
     recall_ = static_cast<int>(typed_.size());
     input_->clear();
-    emit command(line);
+    if (py)
+      emit python(line);
+    else
+      emit command(line);
   });
+}
+
+void ConsoleWidget::setPythonMode(bool on) {
+  if (python_->isChecked() != on) return python_->setChecked(on);  // toggles back here
+  more_ = false;
+  prompt_->setText(on ? ">>>" : ">");
+  input_->setPlaceholderText(
+      on ? "Python, with m the model: print(m.blocks.pos), m.cycle(100), m.command(\"solve\")"
+         : "Type a command (e.g. step 1000, solve, figure view.png) and press Enter");
+}
+
+void ConsoleWidget::setContinuation(bool more) {
+  more_ = more;
+  prompt_->setText(pythonMode() ? (more ? "..." : ">>>") : ">");
 }
 
 void ConsoleWidget::append(const QString& text, bool error) {

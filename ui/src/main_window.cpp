@@ -72,6 +72,24 @@ MainWindow::MainWindow(QWidget* parent)
     pending_.append(line);
     console_->append("queued: " + line + " (runs when the solver is done)", false);
   });
+  // Python: the lines of one statement gather until Python says it is complete, then run as
+  // one command (journaled as comments, undone as one). Typed while the solver runs, a line
+  // stays in the input to send again.
+  connect(console_, &ConsoleWidget::python, this, [this](const QString& line) {
+    if (busy()) {
+      console_->input()->setText(line);
+      console_->append("the solver is running: Python waits until it is done (press Enter then)",
+                       true);
+      return;
+    }
+    python_lines_.append(line);
+    runCommand(kPythonPrefix + python_lines_.join('\n'));
+  });
+  connect(worker_, &SolverWorker::pythonMore, this, [this] {
+    running_.clear();
+    setBusy(false);
+    console_->setContinuation(true);
+  });
   // The camera turned: figures of the current view and the caption follow it.
   connect(view_, &VtkView::turned, this, [this](double azimuth, double elevation) {
     options_.azimuth = azimuth, options_.elevation = elevation;
@@ -306,7 +324,11 @@ void MainWindow::runCommand(const QString& line) {
   }
   running_ = line;
   setBusy(true);
-  QMetaObject::invokeMethod(worker_, "execute", Qt::QueuedConnection, Q_ARG(QString, line));
+  if (line.startsWith(kPythonPrefix))
+    QMetaObject::invokeMethod(worker_, "executePython", Qt::QueuedConnection,
+                              Q_ARG(QString, line.mid(kPythonPrefix.size())));
+  else
+    QMetaObject::invokeMethod(worker_, "execute", Qt::QueuedConnection, Q_ARG(QString, line));
 }
 
 void MainWindow::step(int cycles) {
@@ -342,8 +364,11 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   running_.clear();
   progress_->hide();
   setBusy(false);
+  // A Python statement ran (or failed): the prompt starts afresh.
+  if (what.startsWith(kPythonPrefix)) python_lines_.clear(), console_->setContinuation(false);
   if (ok && !what.startsWith('<')) {
-    journal_.append(what), dirty_ = true;
+    // Python goes into the saved script as comments, a line each.
+    journal_.append(QString(what).replace("\n", "\n" + kPythonPrefix).split('\n')), dirty_ = true;
     undoable_.append(what);
     // A new command ends the redo list; a redone one moves from it.
     if (redoing_)
@@ -353,7 +378,10 @@ void MainWindow::onFinished(bool ok, const QString& error) {
   }
   if (ok && what == "<undo>" && !undoable_.isEmpty()) {
     redo_.append(undoable_.takeLast());
-    journal_.removeLast(), dirty_ = true;
+    // Its journal lines (a Python statement may have several).
+    for (qsizetype k = redo_.last().count('\n') + 1; k > 0 && !journal_.isEmpty(); --k)
+      journal_.removeLast();
+    dirty_ = true;
   }
   redoing_ = false;
   while (undoable_.size() > undo_depth_) undoable_.removeFirst();

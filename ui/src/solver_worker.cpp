@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "python_console.hpp"
 #include "tessera/io/state_io.hpp"
 #include "tessera/script/script.hpp"
 #include "tessera/ui/figure_writer.hpp"
@@ -54,7 +55,8 @@ void SolverWorker::publish(bool held) {
 }
 
 // Called after every cycle on this thread: hands over a snapshot if asked, waits while paused.
-void SolverWorker::observe(const Model&) {
+void SolverWorker::observe(const Model& m) {
+  if (python_) python_->observe(m);
   if (want_snapshot_.exchange(false)) publish();
   if (paused_) {
     publish(true);
@@ -91,6 +93,7 @@ void SolverWorker::openFile(const QString& path, const QString& outDir) {
   interp_->set_observer([this](const Model& m) { observe(m); });
   interp_->set_figure_sink(figure_sink());
   console_line_ = 0;
+  if (python_) python_->bind(*interp_);
   undo_.clear();
   emit undoDepth(0);
   if (path.isEmpty()) return publish();
@@ -116,14 +119,55 @@ void SolverWorker::execute(const QString& line) {
       }
       throw;
     }
-    undo_.push_back(std::move(before));
-    double bytes = 0;
-    for (const auto& p : undo_) bytes += p->model.approx_bytes();
-    while (undo_.size() > kUndoDepth || (undo_.size() > 1 && bytes > kUndoBytes)) {
-      bytes -= undo_.front()->model.approx_bytes();
-      undo_.pop_front();
+    keepForUndo(std::move(before));
+  });
+  interp_->set_rollback(true);
+}
+
+void SolverWorker::keepForUndo(std::unique_ptr<SavePoint> before) {
+  undo_.push_back(std::move(before));
+  double bytes = 0;
+  for (const auto& p : undo_) bytes += p->model.approx_bytes();
+  while (undo_.size() > kUndoDepth || (undo_.size() > 1 && bytes > kUndoBytes)) {
+    bytes -= undo_.front()->model.approx_bytes();
+    undo_.pop_front();
+  }
+  emit undoDepth(static_cast<int>(undo_.size()));
+}
+
+void SolverWorker::executePython(const QString& source) {
+  const std::string text = source.toStdString();
+  // Python starts with the first line typed; a build without it says so as the line's error.
+  if (!python_) {
+    std::string why;
+    try {
+      python_ = std::make_unique<PythonConsole>(
+          [this](const std::string& s, bool error) {
+            emit logLine(QString::fromStdString(s), error);
+          },
+          &stop_);
+      python_->bind(*interp_);
+    } catch (const std::exception& e) {
+      why = e.what();
+      python_.reset();
     }
-    emit undoDepth(static_cast<int>(undo_.size()));
+    if (!why.empty()) return (void)run(source, [&] { throw std::runtime_error(why); });
+  }
+  if (python_->incomplete(text)) return emit pythonMore();
+  auto before = std::make_unique<SavePoint>(interp_->save_point());
+  // The module's calls keep their own save points: the interpreter's are not needed.
+  interp_->set_rollback(false);
+  run(source, [&] {
+    const QStringList lines = source.split('\n');
+    for (int i = 0; i < lines.size(); ++i) emit logLine((i ? "... " : ">>> ") + lines[i], false);
+    const std::string error = python_->run(text);
+    // Stopped from the window: the model stays where the run stopped, as for a command.
+    if (!error.empty() && !stop_) {
+      interp_->restore(*before);
+      emit logLine("the model is as it was before this statement", false);
+      throw std::runtime_error("Python: " + error);
+    }
+    keepForUndo(std::move(before));
   });
   interp_->set_rollback(true);
 }

@@ -196,6 +196,10 @@ class MainWindow : public QMainWindow {
   QString selection_;
   std::vector<int> selected_;
   QStringList pending_;  // runCommands' lines still to run
+  // The lines of the Python statement being typed (the console's Python mode).
+  QStringList python_lines_;
+  // What marks Python among the commands run: journaled so, a script reads it as a comment.
+  inline static const QString kPythonPrefix = "; python> ";
   std::deque<StageLine> stage_queue_;
   int stage_running_ = -1;
   bool stage_last_ = false;

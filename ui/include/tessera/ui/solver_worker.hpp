@@ -5,7 +5,8 @@
 // queued slots (commands) and a few thread-safe calls (snapshot request, pause, stop); it never
 // touches the model. Commands run with rollback on, so a failing one leaves the model as it was.
 // Each command that succeeds keeps a save point of the interpreter from before it, so it can be
-// undone (the newest kUndoDepth of them).
+// undone (the newest kUndoDepth of them). Python typed in the console runs here too, on an
+// interpreter embedded on this thread.
 #pragma once
 
 #include <QObject>
@@ -24,6 +25,8 @@ struct SavePoint;
 }  // namespace tessera
 
 namespace tessera::ui {
+
+class PythonConsole;
 
 class SolverWorker : public QObject {
   Q_OBJECT
@@ -50,6 +53,9 @@ class SolverWorker : public QObject {
   void openFile(const QString& path, const QString& outDir);
   // One line of script typed by the user (or made by a drawing tool or dialog).
   void execute(const QString& line);
+  // Python typed in the console (the lines of one statement): `m` is this model. A statement
+  // still open is not run: pythonMore() asks for its next line instead of started/finished.
+  void executePython(const QString& source);
   // Back to the state before the newest command that can be undone (finished reports it).
   void undo();
   // Saves the model's state (binary, for `restore`).
@@ -63,12 +69,16 @@ class SolverWorker : public QObject {
   void snapshotReady();
   // How many commands can be undone now (emitted before `finished`).
   void undoDepth(int depth);
+  // The Python typed so far is a statement still open (executePython).
+  void pythonMore();
 
  private:
   // Runs body as one command; true if it succeeded.
   bool run(const QString& what, const std::function<void()>& body);
   void publish(bool held = false);
   void observe(const Model& m);
+  // Keeps the save point from before a command that succeeded, for undo.
+  void keepForUndo(std::unique_ptr<SavePoint> before);
 
   std::unique_ptr<Interpreter> interp_;
   std::atomic<bool> want_snapshot_{false}, paused_{false}, stop_{false}, busy_{false};
@@ -78,6 +88,7 @@ class SolverWorker : public QObject {
   std::deque<std::unique_ptr<SavePoint>> undo_;
   uint64_t serial_ = 0;
   int console_line_ = 0;
+  std::unique_ptr<PythonConsole> python_;  // started by the first Python line
 };
 
 }  // namespace tessera::ui
