@@ -102,10 +102,20 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
 // A contact found in this pass: corner `corner` of `owner` against the feature of `other` it
 // meets (its geometry is computed again from these when the contact is stored: 32 bytes a
 // find instead of 96 keep the pass's peak memory down).
+// A corner near a feature, as the narrow phase found it (16 bytes: a pass holds one per
+// contact): the feature's vertex index with its kind and slot in the top bits.
 struct Found {
-  uint32_t owner, corner, other, feature;
-  uint8_t slot, kind;
-  double gap;
+  uint32_t owner, corner, other, packed;
+  Found(uint32_t o, uint32_t c, uint32_t b, uint32_t feature, uint8_t slot, uint8_t kind)
+      : owner(o),
+        corner(c),
+        other(b),
+        packed(feature | uint32_t(kind) << 30 | uint32_t(slot) << 31) {
+    if (feature >= (1u << 30)) throw ModelError("too many block vertices (2^30 at most)");
+  }
+  uint32_t feature() const { return packed & ((1u << 30) - 1); }
+  uint8_t kind() const { return static_cast<uint8_t>((packed >> 30) & 1u); }
+  uint8_t slot() const { return static_cast<uint8_t>(packed >> 31); }
   uint32_t lo() const { return std::min(owner, other); }
   uint32_t hi() const { return std::max(owner, other); }
 };
@@ -115,9 +125,9 @@ FeatureHit found_hit(const Blocks& B, const Found& f) {
   FeatureHit hit;
   const CornerArc arc = corner_arc(B, f.owner, f.corner);
   const double depth = max_contact_depth(B, f.owner, f.other);
-  const bool ok = f.kind == kCornerEdge
-                      ? edge_feature(B, f.other, f.feature, arc, depth, hit, nullptr)
-                      : corner_feature(B, f.other, f.feature, arc, depth, hit);
+  const bool ok = f.kind() == kCornerEdge
+                      ? edge_feature(B, f.other, f.feature(), arc, depth, hit, nullptr)
+                      : corner_feature(B, f.other, f.feature(), arc, depth, hit);
   if (!ok) throw std::logic_error("a contact found in detection has lost its feature");
   return hit;
 }
@@ -138,7 +148,7 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
     FeatureHit hit;
     const double depth = max_contact_depth(B, owner, other);
     if (!nearest_feature(B, other, arc, corners, 0, nf, depth, hit) || hit.gap >= reach) continue;
-    out.push_back({owner, v, other, hit.feature, 0, hit.kind, hit.gap});
+    out.emplace_back(owner, v, other, hit.feature, 0, hit.kind);
     if (B.all_convex[other] || hit.kind != kCornerEdge) continue;
     // In the notch of a concave block the corner also touches a second face: one it is near,
     // not a face of the block far behind the first.
@@ -149,7 +159,7 @@ void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& o
           h.normal.dot(hit.normal) < 0.7 && (!has_second || std::abs(h.gap) < std::abs(second.gap)))
         second = h, has_second = true;
     if (!has_second) continue;
-    out.push_back({owner, v, other, second.feature, 1, second.kind, second.gap});
+    out.emplace_back(owner, v, other, second.feature, 1, second.kind);
   }
 }
 
@@ -183,26 +193,14 @@ void detect_contacts(Model& m) {
   Contacts& old = m.contacts;
   constexpr uint32_t kNew = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> from(found.size(), kNew);
-  std::vector<std::pair<uint32_t, int>> fresh;  // joint and tag of each new contact, in order
-  size_t j = 0;
-  auto old_key = [&](size_t i) {
-    const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
-    return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
-  };
-  for (size_t k = 0; k < found.size(); ++k) {
-    const Found& f = found[k];
-    const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot);
-    while (j < old.size() && old_key(j) < key) ++j;
-    if (j < old.size() && old_key(j) == key) {
-      from[k] = static_cast<uint32_t>(j);
-      continue;
-    }
-    // The joint tag of the face met (for a rounded corner, the later of its two edges).
-    const uint32_t e = f.feature;
+  // The joint of a new contact, from the tag of the face met (for a rounded corner, the later
+  // of its two edges); -1 when no joint properties apply.
+  const auto joint_of = [&](const Found& f) {
+    const uint32_t e = f.feature();
     const uint32_t v0 = B.vert_begin[f.other], nv = B.vertex_count(f.other);
     const uint32_t prev = v0 + (e - v0 + nv - 1) % nv;
     int tag = std::max(B.edge_tag[e], B.edge_tag[prev]);
-    if (f.kind == kCornerEdge) {
+    if (f.kind() == kCornerEdge) {
       // The face met, and the owner's edge that lies along it (a joint is tagged on either
       // side, or only on the side a generator made).
       const uint32_t o0 = B.vert_begin[f.owner], no = B.vertex_count(f.owner);
@@ -212,13 +210,27 @@ void detect_contacts(Model& m) {
           std::abs(B.world_edge_dir[oprev].dot(u)) >= std::abs(B.world_edge_dir[f.corner].dot(u));
       tag = std::max(B.edge_tag[e], B.edge_tag[in_along ? oprev : f.corner]);
     }
-    const int joint = m.joint_for(f.owner, f.other, tag);
-    if (joint < 0) {
+    return std::pair{m.joint_for(f.owner, f.other, tag), tag};
+  };
+  // First where each find's contact was, and for a new one whether joint properties apply (it
+  // may fail, and nothing is changed yet; the joint is looked up again when it is made).
+  size_t j = 0;
+  auto old_key = [&](size_t i) {
+    const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
+    return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
+  };
+  for (size_t k = 0; k < found.size(); ++k) {
+    const Found& f = found[k];
+    const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot());
+    while (j < old.size() && old_key(j) < key) ++j;
+    if (j < old.size() && old_key(j) == key) {
+      from[k] = static_cast<uint32_t>(j);
+      continue;
+    }
+    if (joint_of(f).first < 0)
       throw ModelError("no joint properties apply to the contact between " +
                        m.block_label(f.owner) + " and " + m.block_label(f.other) +
                        ": use 'joint assign'");
-    }
-    fresh.emplace_back(static_cast<uint32_t>(joint), tag);
   }
   // Contacts dropped while dilation held them loaded (for a warning).
   {
@@ -242,23 +254,24 @@ void detect_contacts(Model& m) {
         std::decay_t<decltype(was)>().swap(was);
       },
       next, old);
-  for (size_t k = 0, q = 0; k < count; ++k) {
+  for (size_t k = 0; k < count; ++k) {
     const Found& f = found[k];
+    const FeatureHit hit = found_hit(B, f);
     if (from[k] == kNew) {
       // A new contact: who it joins and the joint it is on; no history (zeros).
-      next.a[k] = f.owner, next.b[k] = f.other, next.corner[k] = f.corner, next.slot[k] = f.slot;
-      next.joint[k] = fresh[q].first, next.tag[k] = fresh[q].second;
-      const JointProperties& jp = m.joints[fresh[q++].first];
+      next.a[k] = f.owner, next.b[k] = f.other, next.corner[k] = f.corner, next.slot[k] = f.slot();
+      const auto [joint, tag] = joint_of(f);
+      next.joint[k] = static_cast<uint32_t>(joint), next.tag[k] = tag;
+      const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
       // Joints shut when the model is assembled are bonded (cohesion and tension act); a
       // contact open by more than round-off is a gap, not a joint.
-      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && f.gap <= m.bond_gap())
+      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && hit.gap <= m.bond_gap())
         next.flags[k] |= kBonded;
     }
-    const FeatureHit hit = found_hit(B, f);
     next.kind[k] = hit.kind, next.feature[k] = hit.feature, next.gap[k] = hit.gap;
     next.normal[k] = hit.normal, next.point[k] = hit.point, next.chord[k] = hit.chord;
     // Both contacts of a corner in a notch keep their own face.
-    const bool notch = f.slot == 1 || (k + 1 < found.size() && found[k + 1].slot == 1);
+    const bool notch = f.slot() == 1 || (k + 1 < found.size() && found[k + 1].slot() == 1);
     next.flags[k] = static_cast<uint8_t>(notch ? next.flags[k] | kNotch : next.flags[k] & ~kNotch);
   }
   // Interface ranges.
