@@ -31,7 +31,11 @@ py::array view(const T* p, size_t n, size_t k, size_t stride, py::handle base) {
   std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(stride)};
   if (k > 0) shape.push_back(static_cast<py::ssize_t>(k)), strides.push_back(sizeof(T));
   if (n == 0) return py::array(py::dtype::of<T>(), shape, strides);
-  return frozen(py::array(py::dtype::of<T>(), shape, strides, p, base));
+  py::array a(py::dtype::of<T>(), shape, strides, p, base);
+  // The window's model (borrowed) changes under Python's feet (undo, a failed command's
+  // rollback, a script opened), so its arrays are copies, never views.
+  if (!base.cast<const PyModel&>().owned) a = a.attr("copy")();
+  return frozen(a);
 }
 
 template <class T>

@@ -153,7 +153,7 @@ void PyModel::run(const std::string& text) {
     std::istringstream in(text);
     std::string one;
     for (int i = 0; std::getline(in, one); ++i) interp->execute(one, file, line + i);
-    if (stop && stop->load()) {
+    if (stop && stop->load() && !in_callback) {
       PyErr_SetNone(PyExc_KeyboardInterrupt);
       throw py::error_already_set();
     }
@@ -177,6 +177,8 @@ void PyModel::run_lines(const std::vector<std::string>& lines) {
 }
 
 void PyModel::observe(const Model& m) {
+  // Stopped from the window: the run ends at its next check, as stopped (no callback now).
+  if (stop && stop->load()) return;
   // Ctrl+C in Python stops the run (the model goes back to before it).
   if (m.cycle % 64 == 0 && PyErr_CheckSignals() != 0) {
     pending.emplace();
@@ -305,6 +307,11 @@ void define_module(py::module_& mod) {
                 ids.push_back(m.dim == 3 ? m.blocks3.id[b] : m.blocks.id[b]);
             const size_t d = m.dim, dm = m.dim == 3 ? 3 : 1;
             const std::vector<double> rows = rows_of(f, ids.size(), d, "set_force");
+            // All blocks of a 3D model: a joined body's load is its first piece's row (as
+            // m.blocks.load shows it); the other pieces' rows are not used.
+            const auto skipped = [&](size_t i) {
+              return !blocks && m.dim == 3 && m.blocks3.is_slave(i);
+            };
             std::vector<double> turn;
             if (moment && dm == 1 && moment->ndim() == 0)
               turn.assign(ids.size(), *moment->data());
@@ -315,6 +322,7 @@ void define_module(py::module_& mod) {
               turn = rows_of(*moment, ids.size(), dm, "set_force(moment=)");
             std::vector<std::string> lines;
             for (size_t i = 0; i < ids.size(); ++i) {
+              if (skipped(i)) continue;
               std::string l = "load block=" + std::to_string(ids[i]);
               for (size_t k = 0; k < d; ++k)
                 l += std::string(" f") + "xyz"[k] + "=" + number(rows[i * d + k]);
@@ -329,7 +337,8 @@ void define_module(py::module_& mod) {
           py::arg("f"), py::arg("blocks") = py::none(), py::arg("moment") = py::none(),
           "Constant loads at the centroids of rigid blocks (rows for the blocks numbered, or "
           "all): force (n, dim) and, if given, moment (2D (n,) or a number, 3D (n, 3)); they "
-          "replace the blocks' loads before (the 'load' command)")
+          "replace the blocks' loads before, a moment not given staying as it was (the 'load' "
+          "command; a joined 3D body takes its first piece's row when all are given)")
       .def(
           "set_node_force",
           [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& f,

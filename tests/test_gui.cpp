@@ -1659,6 +1659,14 @@ class TestGui : public QObject {
     type("print('calls', len(seen))");
     QVERIFY(wait_finished(w));
     QVERIFY(console->text().contains("calls 3"));
+    // A statement left open when the mode changes is dropped, not glued to the next one.
+    type("for k in range(2):");
+    QTRY_VERIFY(!w.busy());
+    console->setPythonMode(false);
+    console->setPythonMode(true);
+    type("print('fresh', 2 + 2)");
+    QVERIFY(wait_finished(w));
+    QVERIFY(console->text().contains("fresh 4"));
     // An exception after a run: the traceback in the log, the model back where it was.
     type("m.cycle(20); 1/0");
     QVERIFY(!wait_finished(w));
@@ -1675,7 +1683,7 @@ class TestGui : public QObject {
     w.undo();
     QVERIFY(wait_finished(w));
     QCOMPARE(w.snapshot()->cycle, start + 30);
-    QCOMPARE(w.journal().last(), QString("; python> print('calls', len(seen))"));
+    QCOMPARE(w.journal().last(), QString("; python> print('fresh', 2 + 2)"));
   }
 
   // A bad command and a diverging run: an error in the console and a message, the model as

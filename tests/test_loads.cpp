@@ -3,6 +3,7 @@
 // pressed block's joint carries W + F; a moment ramped by a table spins a free block at
 // M t^2 / (2 I); joined 3D pieces carry their loads at the body's centroid.
 #include <QtTest>
+#include <array>
 #include <cmath>
 
 #include "support.hpp"
@@ -169,6 +170,41 @@ class TestLoads : public QObject {
           m.blocks3.omega[0].z(), 500 * t / izz);
     QVERIFY(std::abs(body.velocity.y() - 1000 * t / mass) < 1e-3 * 1000 * t / mass);
     QVERIFY(std::abs(m.blocks3.omega[0].z() - 500 * t / izz) < 2e-3 * 500 * t / izz);
+  }
+
+  // A cut or join keeps the loads of the blocks it leaves whole (2D rebuilds every block), and
+  // a state file keeps loads (2D and 3D).
+  void loadsSurviveCutsOfOtherBlocksAndStateFiles() {
+    ScriptRun r;
+    r.run(tessera::test::incline_script(0, 30) +
+          "block 2,0 3,0 3,1 2,1 material=rock\nblock 3,0 4,0 4,1 3,1 material=rock\n"
+          "load block=2 fx=5 fy=-6 moment=7\njoin block=3,4\n"
+          "crack 1.5,0.5 4.5,0.5\njset angle=90 spacing=10 origin=-7.5,0");
+    const auto sums = [&] {
+      const Blocks& B = r.model().blocks;
+      double fx = 0, fy = 0, mz = 0;
+      for (size_t b = 0; b < B.size(); ++b)
+        fx += B.load_fx[b], fy += B.load_fy[b], mz += B.load_m[b];
+      return std::array<double, 3>{fx, fy, mz};
+    };
+    QVERIFY(r.model().blocks.size() > 5);  // the cuts were made
+    QCOMPARE(sums(), (std::array<double, 3>{5.0, -6.0, 7.0}));
+    r.run("save " + r.path("s.state") + "\nload all fx=0 fy=0 moment=0\nrestore " +
+          r.path("s.state"));
+    QCOMPARE(sums(), (std::array<double, 3>{5.0, -6.0, 7.0}));
+    ScriptRun r3;
+    r3.run(cube3d(1e10) + "load block=2 fz=-3 mx=2\nsave " + r3.path("s3.state") +
+           "\nload block=2 fz=0 mx=0\nrestore " + r3.path("s3.state"));
+    QCOMPARE(r3.model().blocks3.load_force[1].z(), -3.0);
+    QCOMPARE(r3.model().blocks3.load_moment[1].x(), 2.0);
+    // A 3D cut through the loaded cube is refused, the model as it was.
+    try {
+      r3.run("jset dip=90 ddir=90 spacing=10 origin=0.5,0,0");
+      QFAIL("a loaded 3D block was cut");
+    } catch (const ScriptError& e) {
+      QVERIFY(std::string(e.what()).find("block 2 carries a load") != std::string::npos);
+    }
+    QCOMPARE(r3.model().blocks3.size(), size_t(2));
   }
 
   // What the command refuses, naming the block, and what it leaves as it was.

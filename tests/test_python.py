@@ -348,6 +348,16 @@ class Stack3D(unittest.TestCase):
         print(f"3D cube pressed by 10 kN: sub-contacts carry {carried:.2f} N of {expected:.2f} N")
         self.assertAlmostEqual(carried, expected, delta=1e-4 * expected)
 
+    def test_set_force_on_a_joined_body(self):
+        m = model(STACK3 + "block box 1,0,0 2,1,1 group=cube material=rock\njoin group=cube\n",
+                  "joined_load")
+        load = np.zeros((3, 3))
+        load[1] = [0.0, 0.0, -1e4]  # the body's first piece; its other piece's row is not used
+        m.set_force(load)
+        np.testing.assert_array_equal(m.blocks.load, load)
+        m.set_force(2 * m.blocks.load)
+        self.assertEqual(m.blocks.load[1, 2], -2e4)
+
     def test_arrays_3d(self):
         m = self.m
         b, c = m.blocks, m.contacts

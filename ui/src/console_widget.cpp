@@ -58,7 +58,11 @@ ConsoleWidget::ConsoleWidget(QWidget* parent)
 
 void ConsoleWidget::setPythonMode(bool on) {
   if (python_->isChecked() != on) return python_->setChecked(on);  // toggles back here
-  more_ = false;
+  if (more_) {
+    more_ = false;
+    append("(the open Python statement is dropped)", false);
+    emit statementDropped();
+  }
   prompt_->setText(on ? ">>>" : ">");
   input_->setPlaceholderText(
       on ? "Python, with m the model: print(m.blocks.pos), m.cycle(100), m.command(\"solve\")"

@@ -85,10 +85,13 @@ MainWindow::MainWindow(QWidget* parent)
     python_lines_.append(line);
     runCommand(kPythonPrefix + python_lines_.join('\n'));
   });
+  connect(console_, &ConsoleWidget::statementDropped, this, [this] { python_lines_.clear(); });
   connect(worker_, &SolverWorker::pythonMore, this, [this] {
     running_.clear();
     setBusy(false);
     console_->setContinuation(true);
+    // Commands queued meanwhile run now, in order.
+    if (!pending_.isEmpty() && stage_running_ < 0) runCommand(pending_.takeFirst());
   });
   // The camera turned: figures of the current view and the caption follow it.
   connect(view_, &VtkView::turned, this, [this](double azimuth, double elevation) {
@@ -296,6 +299,7 @@ void MainWindow::openScript(const QString& path) {
   if (!keepWork()) return;
   if (busy()) worker_->stop();
   dirty_ = false;
+  python_lines_.clear(), console_->setContinuation(false);
   script_path_ = info.absoluteFilePath();
   QFile f(script_path_);
   journal_.clear();

@@ -59,9 +59,14 @@ struct PythonConsole::Impl {
   std::string pending[2];  // output not yet ended by a newline: stdout, stderr
   py::object console, ns, model_obj;
   python::PyModel* model = nullptr;
+  // m.on_cycle's callbacks before the last statement (put back when it fails).
+  std::vector<python::PyModel::Callback> callbacks_before;
   // Python outlives the console (it is never finalised: the window may close on another
   // thread), so the references are left to it.
-  ~Impl() { console.release(), ns.release(), model_obj.release(); }
+  ~Impl() {
+    console.release(), ns.release(), model_obj.release();
+    for (auto& c : callbacks_before) c.fn.release();
+  }
   void write(const std::string& text, int stream) {
     std::string& p = pending[stream];
     p += text;
@@ -81,7 +86,13 @@ bool python_console_available() {
 PythonConsole::PythonConsole(Output out, const std::atomic<bool>* stop)
     : impl_(std::make_unique<Impl>()) {
   impl_->out = std::move(out), impl_->stop = stop;
-  if (!Py_IsInitialized()) py::initialize_interpreter(false);
+  // Started once per process, its lock released: each call takes it (a second window's worker
+  // is another thread).
+  if (!Py_IsInitialized()) {
+    py::initialize_interpreter(false);
+    PyEval_SaveThread();
+  }
+  py::gil_scoped_acquire gil;
   py::dict helpers;
   py::exec(kConsoleClass, helpers);
   Impl* self = impl_.get();
@@ -89,6 +100,8 @@ PythonConsole::PythonConsole(Output out, const std::atomic<bool>* stop)
   for (int s = 0; s < 2; ++s)
     sys.attr(s == 0 ? "stdout" : "stderr") = helpers["Stream"](
         py::cpp_function([self, s](const std::string& text) { self->write(text, s); }));
+  // Nothing to read from: input() meets the end of its input.
+  sys.attr("stdin") = py::module_::import("io").attr("StringIO")("");
   impl_->ns = py::dict();
   impl_->ns["__name__"] = "__console__";
   impl_->ns["tessera"] = py::module_::import("tessera");
@@ -103,6 +116,7 @@ PythonConsole::PythonConsole(Output out, const std::atomic<bool>* stop)
 PythonConsole::~PythonConsole() = default;
 
 void PythonConsole::bind(Interpreter& interp) {
+  py::gil_scoped_acquire gil;
   Impl& s = *impl_;
   if (!s.model) {
     s.model = new python::PyModel(interp);
@@ -115,11 +129,18 @@ void PythonConsole::bind(Interpreter& interp) {
 }
 
 bool PythonConsole::incomplete(const std::string& source) {
-  return impl_->console.attr("incomplete")(source).cast<bool>();
+  py::gil_scoped_acquire gil;
+  try {
+    return impl_->console.attr("incomplete")(source).cast<bool>();
+  } catch (const py::error_already_set&) {
+    return false;  // complete: running it reports the error (a RecursionError, say)
+  }
 }
 
 std::string PythonConsole::run(const std::string& source) {
+  py::gil_scoped_acquire gil;
   Impl& s = *impl_;
+  if (s.model) s.callbacks_before = s.model->callbacks;
   s.console.attr("error") = "";
   std::string error;
   try {
@@ -135,7 +156,14 @@ std::string PythonConsole::run(const std::string& source) {
 }
 
 void PythonConsole::observe(const Model& m) {
-  if (impl_->model) impl_->model->observe(m);
+  if (!impl_->model || impl_->model->callbacks.empty()) return;
+  py::gil_scoped_acquire gil;
+  impl_->model->observe(m);
+}
+
+void PythonConsole::rollback() {
+  py::gil_scoped_acquire gil;
+  if (impl_->model) impl_->model->callbacks = impl_->callbacks_before;
 }
 
 }  // namespace tessera::ui

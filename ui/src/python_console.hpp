@@ -22,8 +22,8 @@ class PythonConsole {
  public:
   // Printed output and tracebacks (error true), a line at a time.
   using Output = std::function<void(const std::string& text, bool error)>;
-  // Starts Python on the calling thread, which keeps its lock from then on: only that thread
-  // may call the rest. Throws std::runtime_error if this build has no Python.
+  // Starts Python (once a process) and readies a prompt; every call takes Python's lock and
+  // leaves it free. Throws std::runtime_error if this build has no Python.
   PythonConsole(Output out, const std::atomic<bool>* stop);
   ~PythonConsole();
   PythonConsole(const PythonConsole&) = delete;
@@ -38,6 +38,8 @@ class PythonConsole {
   std::string run(const std::string& source);
   // After each cycle of a run: the m.on_cycle callbacks that are due (throws if one raised).
   void observe(const Model& m);
+  // The statement last run failed and its model was put back: its callbacks go too.
+  void rollback();
 
  private:
   struct Impl;

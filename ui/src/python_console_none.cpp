@@ -26,5 +26,6 @@ std::string PythonConsole::run(const std::string&) {
   return {};
 }
 void PythonConsole::observe(const Model&) {}
+void PythonConsole::rollback() {}
 
 }  // namespace tessera::ui

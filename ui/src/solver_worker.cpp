@@ -162,8 +162,10 @@ void SolverWorker::executePython(const QString& source) {
     for (int i = 0; i < lines.size(); ++i) emit logLine((i ? "... " : ">>> ") + lines[i], false);
     const std::string error = python_->run(text);
     // Stopped from the window: the model stays where the run stopped, as for a command.
-    if (!error.empty() && !stop_) {
+    const bool stopped = stop_ && error.rfind("KeyboardInterrupt", 0) == 0;
+    if (!error.empty() && !stopped) {
       interp_->restore(*before);
+      python_->rollback();
       emit logLine("the model is as it was before this statement", false);
       throw std::runtime_error("Python: " + error);
     }

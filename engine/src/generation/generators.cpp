@@ -149,6 +149,11 @@ int joint_tag(Model& m, const std::string& name) {
   return static_cast<int>(m.joint_tags.size()) - 1;
 }
 
+// Whether block b carries a load ('load').
+static bool loaded(const Blocks& B, size_t b) {
+  return B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0;
+}
+
 // Rebuilds the model's blocks: those not flagged in `in` first, in order, then the new polygons;
 // each new block takes group, material, fixity and velocities from its parent. Blocks are
 // renumbered and contacts made anew.
@@ -164,8 +169,12 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
   if (!m.liners.empty())
     throw ModelError("cut and join blocks before placing liners (liner '" +
                      m.liners.liners[0].name + "' is anchored in the blocks as they are)");
+  // A load stays on a block left whole; a block cut into pieces (or one joined to others, which
+  // leaves a piece to one parent only) cannot share out its load.
+  std::vector<int> piece_count(old.size(), 0);
+  for (size_t p : parents) ++piece_count[p];
   for (size_t b = 0; b < old.size(); ++b)
-    if (in[b] && (old.load_fx[b] != 0.0 || old.load_fy[b] != 0.0 || old.load_m[b] != 0.0))
+    if (in[b] && piece_count[b] != 1 && loaded(old, b))
       throw ModelError("cut and join blocks before loading them (block " +
                        std::to_string(old.id[b]) + " carries a load: 'load block=" +
                        std::to_string(old.id[b]) + " fx=0 fy=0 moment=0' takes it off)");
@@ -177,6 +186,8 @@ static void replace_blocks(Model& m, const Blocks& old, const std::vector<uint8_
     B.vx[b] = old.vx[parent], B.vy[b] = old.vy[parent], B.omega[b] = old.omega[parent];
     B.fixed_vx[b] = old.fixed_vx[parent], B.fixed_vy[b] = old.fixed_vy[parent];
     B.fixed_omega[b] = old.fixed_omega[parent];
+    B.load_fx[b] = old.load_fx[parent], B.load_fy[b] = old.load_fy[parent];
+    B.load_m[b] = old.load_m[parent];
   };
   auto density = [&](int mat) {
     return mat >= 0 ? m.materials[static_cast<size_t>(mat)].density : 0.0;
@@ -254,6 +265,10 @@ void join_blocks(Model& m, const std::vector<size_t>& chosen) {
     if (m.blocks.deformable[b])
       throw ModelError("block " + std::to_string(m.blocks.id[b]) +
                        " is deformable: join blocks before 'zone generate'");
+  for (size_t b : chosen)
+    if (loaded(m.blocks, b))
+      throw ModelError("cut and join blocks before loading them (block " +
+                       std::to_string(m.blocks.id[b]) + " carries a load)");
   const Blocks old = m.blocks;
   std::vector<uint8_t> in(old.size(), 0);
   std::vector<TaggedPolygon> polys;

@@ -63,6 +63,14 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
   // Keep the blocks no plane split; then the pieces of those that were.
   std::vector<size_t> piece_count(owner.size(), 0);
   for (const CutBlock& p : pieces) ++piece_count[p.parent];
+  // A load cannot be shared out among pieces (checked before anything changes).
+  for (size_t i = 0; i < owner.size(); ++i) {
+    const size_t b = owner[i];
+    if (piece_count[i] > 1 && (B.load_force[b] != Vec3::Zero() || B.load_moment[b] != Vec3::Zero()))
+      throw ModelError("cut blocks before loading them (block " + std::to_string(B.id[b]) +
+                       " carries a load: 'load block=" + std::to_string(B.id[b]) +
+                       " fx=0 fy=0 fz=0 mx=0 my=0 mz=0' takes it off)");
+  }
   for (const CutBlock& p : pieces)
     if (piece_count[p.parent] == 1)
       B.group[owner[p.parent]] = group_of(p, B.group[owner[p.parent]]);
@@ -70,11 +78,7 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t i = 0; i < owner.size(); ++i)
     if (piece_count[i] > 1) doomed[owner[i]] = 1;
-  for (size_t b = 0; b < B.size(); ++b)
-    if (doomed[b] && (B.load_force[b] != Vec3::Zero() || B.load_moment[b] != Vec3::Zero()))
-      throw ModelError("cut blocks before loading them (block " + std::to_string(B.id[b]) +
-                       " carries a load: 'load block=" + std::to_string(B.id[b]) +
-                       " fx=0 fy=0 fz=0 mx=0 my=0 mz=0' takes it off)");
+
   const Blocks3 old = B;
   std::vector<int> map = B.remove(doomed);
   for (size_t b = 0; b < B.size(); ++b) B.id[b] = static_cast<int>(b) + 1;

@@ -29,6 +29,8 @@ class ConsoleWidget : public QWidget {
   void command(const QString& line);
   // A line of Python, as typed (indentation kept; empty when it ends an open statement).
   void python(const QString& line);
+  // The mode changed while a Python statement was open: its lines so far are dropped.
+  void statementDropped();
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
