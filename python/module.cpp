@@ -83,6 +83,11 @@ std::vector<double> rows_of(const py::array_t<double, py::array::c_style | py::a
   return out;
 }
 
+// The numbers of all blocks, in the engine's order (a write given no `blocks=`).
+std::vector<int> all_block_ids(const Model& m) {
+  return m.dim == 3 ? m.blocks3.id : m.blocks.id;
+}
+
 // The commands that cycle, refused inside a callback (it runs between two cycles of one).
 bool cycles(const std::string& text) {
   std::istringstream in(text);
@@ -277,10 +282,7 @@ void define_module(py::module_& mod) {
           [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
              std::optional<std::vector<int>> blocks) {
             const Model& m = s.model();
-            std::vector<int> ids = blocks ? *blocks : std::vector<int>{};
-            if (!blocks)
-              for (size_t b = 0; b < m.block_count(); ++b)
-                ids.push_back(m.dim == 3 ? m.blocks3.id[b] : m.blocks.id[b]);
+            const std::vector<int> ids = blocks ? *blocks : all_block_ids(m);
             const size_t d = m.dim;
             const std::vector<double> rows = rows_of(v, ids.size(), d, "set_velocity");
             std::vector<std::string> lines;
@@ -301,10 +303,7 @@ void define_module(py::module_& mod) {
              std::optional<std::vector<int>> blocks,
              std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> moment) {
             const Model& m = s.model();
-            std::vector<int> ids = blocks ? *blocks : std::vector<int>{};
-            if (!blocks)
-              for (size_t b = 0; b < m.block_count(); ++b)
-                ids.push_back(m.dim == 3 ? m.blocks3.id[b] : m.blocks.id[b]);
+            const std::vector<int> ids = blocks ? *blocks : all_block_ids(m);
             const size_t d = m.dim, dm = m.dim == 3 ? 3 : 1;
             const std::vector<double> rows = rows_of(f, ids.size(), d, "set_force");
             // All blocks of a 3D model: a joined body's load is its first piece's row (as

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "tessera/core/block_loads.hpp"
 #include "tessera/core/model.hpp"
 #include "tessera/script/script.hpp"
 #include "tessera/zones/deformable.hpp"
@@ -121,7 +122,7 @@ void copy_catalogue(const Model& m, Snapshot& s) {
     return "(" + t + ") " + unit;
   };
   for (size_t b = 0; b < B.size(); ++b)
-    if (B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0)
+    if (loaded(B, b))
       add_load(B.id[b], vec_text({B.load_fx[b], B.load_fy[b]}, "N/m"),
                number(B.load_m[b]) + " N m/m");
   for (size_t b = 0; b < B3.size(); ++b) {

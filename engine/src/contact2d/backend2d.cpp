@@ -39,7 +39,8 @@ void resultants2d(Model& m) {
     for (size_t b = b0; b < b1; ++b) {
       double fx = B.mass[b] * g.x() + B.load_fx[b], fy = B.mass[b] * g.y() + B.load_fy[b];
       double mz = B.load_m[b];
-      double applied = B.mass[b] * g.norm() + std::hypot(B.load_fx[b], B.load_fy[b]);
+      double applied = B.mass[b] * g.norm() +
+                       std::sqrt(B.load_fx[b] * B.load_fx[b] + B.load_fy[b] * B.load_fy[b]);
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t i = m.block_contacts[k] >> 1;
         const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;

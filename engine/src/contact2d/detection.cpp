@@ -100,10 +100,8 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
 }
 
 // A contact found in this pass: corner `corner` of `owner` against the feature of `other` it
-// meets (its geometry is computed again from these when the contact is stored: 32 bytes a
-// find instead of 96 keep the pass's peak memory down).
-// A corner near a feature, as the narrow phase found it (16 bytes: a pass holds one per
-// contact): the feature's vertex index with its kind and slot in the top bits.
+// meets, the feature's vertex index with its kind and slot in the top bits (16 bytes: a pass
+// holds one per contact; the geometry is computed again from these when the contact is stored).
 struct Found {
   uint32_t owner, corner, other, packed;
   Found(uint32_t o, uint32_t c, uint32_t b, uint32_t feature, uint8_t slot, uint8_t kind)

@@ -1,5 +1,6 @@
 #include "tessera/generation/generators.hpp"
 
+#include "tessera/core/block_loads.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
@@ -147,11 +148,6 @@ int joint_tag(Model& m, const std::string& name) {
     if (m.joint_tags[i] == name) return static_cast<int>(i);
   m.joint_tags.push_back(name);
   return static_cast<int>(m.joint_tags.size()) - 1;
-}
-
-// Whether block b carries a load ('load').
-static bool loaded(const Blocks& B, size_t b) {
-  return B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0;
 }
 
 // Rebuilds the model's blocks: those not flagged in `in` first, in order, then the new polygons;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/core/block_loads.hpp"
 #include "tessera/core/step.hpp"
 #include "tessera/zones/deformable3.hpp"
 
@@ -66,7 +67,7 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
   // A load cannot be shared out among pieces (checked before anything changes).
   for (size_t i = 0; i < owner.size(); ++i) {
     const size_t b = owner[i];
-    if (piece_count[i] > 1 && (B.load_force[b] != Vec3::Zero() || B.load_moment[b] != Vec3::Zero()))
+    if (piece_count[i] > 1 && B.master[b] == static_cast<int32_t>(b) && loaded(B, b))
       throw ModelError("cut blocks before loading them (block " + std::to_string(B.id[b]) +
                        " carries a load: 'load block=" + std::to_string(B.id[b]) +
                        " fx=0 fy=0 fz=0 mx=0 my=0 mz=0' takes it off)");
@@ -78,7 +79,6 @@ size_t replace_cut3(Model& m, const std::vector<size_t>& owner, const std::vecto
   std::vector<uint8_t> doomed(B.size(), 0);
   for (size_t i = 0; i < owner.size(); ++i)
     if (piece_count[i] > 1) doomed[owner[i]] = 1;
-
   const Blocks3 old = B;
   std::vector<int> map = B.remove(doomed);
   for (size_t b = 0; b < B.size(); ++b) B.id[b] = static_cast<int>(b) + 1;

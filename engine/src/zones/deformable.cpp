@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tessera/core/block_loads.hpp"
 #include "tessera/core/geometry.hpp"
 #include "tessera/core/timestep.hpp"
 #include "tessera/support/reinforcement.hpp"
@@ -57,7 +58,7 @@ void ordered_outline(const ZoneMesh& mesh, const std::vector<Vec2>& poly,
 void make_deformable(Model& m, size_t b, double max_edge, const ZoneGrading* grading) {
   Blocks& B = m.blocks;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
-  if (B.load_fx[b] != 0.0 || B.load_fy[b] != 0.0 || B.load_m[b] != 0.0)
+  if (loaded(B, b))
     throw std::invalid_argument(
         "it carries a load ('load'): zone it first, then load its nodes ('boundary stress')");
   if (!m.support.empty() || !m.cables.empty() || !m.liners.empty())

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/core/block_loads.hpp"
 #include "tessera/core/timestep.hpp"
 #include "tessera/zones/deformable.hpp"
 
@@ -82,8 +83,7 @@ ZoningReport make_deformable3(Model& m, size_t b, double max_edge, const ZoneGra
                               const std::atomic<bool>* stop, bool quadratic) {
   Blocks3& B = m.blocks3;
   if (B.deformable[b]) throw std::invalid_argument("it is deformable already");
-  const size_t body = static_cast<size_t>(B.master[b]);
-  if (B.load_force[body] != Vec3::Zero() || B.load_moment[body] != Vec3::Zero())
+  if (loaded(B, b))
     throw std::invalid_argument(
         "it carries a load ('load'): zone it first, then load its nodes ('boundary stress')");
   if (!m.cables3.empty())
