@@ -168,9 +168,13 @@ void follow(const Model& m, Contact3& c, const Vec3& n) {
   const double mna = ma_n.dot(n), mnb = mb_n.dot(n);
   const double dt = m.dt;
   c.normal = n;
+  // The gap (da - ma_n . p) / mna - (db - mb_n . p) / mnb, as g0 - k . p: no division a point.
+  const double g0 = da / mna - db / mnb;
+  const Vec3 k = ma_n / mna - mb_n / mnb;
+  const Vec3 w = B.omega[ma];
   for (SubContact& s : c.subs) {
-    s.point += dt * (ba.velocity + B.omega[ma].cross(s.point - ba.position));
-    s.gap = (da - ma_n.dot(s.point)) / mna - (db - mb_n.dot(s.point)) / mnb;
+    s.point += dt * (ba.velocity + w.cross(s.point - ba.position));
+    s.gap = g0 - k.dot(s.point);
   }
 }
 }  // namespace
@@ -228,6 +232,10 @@ double joint_forces3(const Model& m, Contact3& c) {
     const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
     m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
   }
+  // Relative velocity of a over b at a point p, (va + wa x (p - xa)) - (vb + wb x (p - xb)),
+  // as v0 + dw x (p - xa): one cross product a sub-contact instead of two.
+  const Vec3 xab = bb.position - ba.position;
+  const Vec3 v0 = ba.velocity - bb.velocity + wb.cross(xab), dw = wa - wb;
   double deepest = 0.0, fastest = 0.0;
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
@@ -248,8 +256,8 @@ double joint_forces3(const Model& m, Contact3& c) {
       fs -= off * n;
       fs *= std::sqrt(fs2 / fs.squaredNorm());
     }
-    const Vec3 ra = s.point - ba.position, rb = s.point - bb.position;
-    const Vec3 dv = s.node < 0 ? Vec3((ba.velocity + wa.cross(ra)) - (bb.velocity + wb.cross(rb)))
+    const Vec3 ra = s.point - ba.position;
+    const Vec3 dv = s.node < 0 ? Vec3(v0 + dw.cross(ra))
                                : Vec3(side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1));
     fastest = std::max(fastest, dv.squaredNorm());
     JointState st{s.fn,    fs.dot(t1), s.un_prev, s.dilation, s.sd1,
@@ -266,9 +274,10 @@ double joint_forces3(const Model& m, Contact3& c) {
     }
     c.force += s.force;
     c.torque_a += ra.cross(s.force);
-    c.torque_b -= rb.cross(s.force);
     c.force_mag += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
   }
+  // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).
+  c.torque_b = xab.cross(c.force) - c.torque_a;
   // How far any point of one block may have moved against the other this step (translation
   // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
   // hundredth of the tolerance.
