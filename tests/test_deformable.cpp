@@ -69,7 +69,9 @@ class TestDeformable : public QObject {
   // B = p / (2G/a^2 + 2(lambda + G)/b^2); within 3% at the side and at the crown (the square's
   // corners beyond b = 20 m add < 0.3%). The tunnel leaves the rock as two blocks split by a
   // joint named 'split', which must hold the tensile hoop stress: left as weak as the other
-  // joints, it opens and the crown moves 2.5 times as far.
+  // joints, it opens and the crown moves 2.5 times as far. Solved under kinetic damping: 30,000
+  // cycles to the ratio against 128,000 under local damping, and within 0.5% of Lame at both
+  // points (local damping: 0.7%).
   void pressureOnAnOpening() {
     ScriptRun r;
     r.run(
@@ -85,7 +87,7 @@ class TestDeformable : public QObject {
         "boundary fix=xy y=-20.01,-19.99\nboundary fix=xy y=19.99,20.01\n"
         "boundary pressure=1e6 joints=hole\n"
         "history xdisp at=1.01,0 label=wall\nhistory ydisp at=0,1.01 label=crown\n"
-        "solve ratio=1e-6 cycles=150000");
+        "damping kinetic\nsolve ratio=1e-6 cycles=150000");
     QCOMPARE(r.model().blocks.size(), size_t(2));
     const double g = 10e9 / 2.5, lambda = 10e9 / 1.5 - 2 * g / 3, b = 20;
     const double big_b = 1e6 / (2 * g + 2 * (lambda + g) / (b * b));
