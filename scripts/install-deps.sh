@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Tessera builds with (and Xvfb with Mesa for the GUI tests;
-# pybind11, Python's headers and numpy for the Python module; lld, which links three times faster) (run as root, or with sudo available).
+# pybind11, Python's headers and numpy for the Python module; lld, which links three times as
+# fast as GNU ld) (run as root, or with sudo available).
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
