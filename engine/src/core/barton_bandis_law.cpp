@@ -9,12 +9,12 @@
 #include <string>
 
 #include "nonlinear_laws.hpp"
+#include "tessera/core/angles.hpp"
 
 namespace tessera {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 // Barton's cap on the mobilised friction angle phi_r + i (degrees).
 constexpr double kMaxAngle = 70.0;
 

@@ -8,12 +8,11 @@
 #include <string>
 
 #include "nonlinear_laws.hpp"
+#include "tessera/core/angles.hpp"
 
 namespace tessera {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The normal stress limit beyond which the stiffnesses stop growing.
 double stress_cap(const JointProperties& p) {

@@ -5,13 +5,12 @@
 #include <cmath>
 #include <type_traits>
 
+#include "tessera/core/angles.hpp"
 #include "tessera/zones/deformable.hpp"
 
 namespace tessera {
 
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // A friction angle whose tangent is divided by f.
 double reduced_friction(double degrees, double f) {

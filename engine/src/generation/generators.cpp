@@ -35,6 +35,7 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 #include <tuple>
 
 #include "tessera/contact2d/detection.hpp"
+#include "tessera/core/angles.hpp"
 #include "tessera/core/random.hpp"
 #include "tessera/core/step.hpp"
 #include "tessera/support/reinforcement.hpp"
@@ -42,7 +43,6 @@ size_t add_running_bond_wall(Model& m, const WallSpec& w) {
 namespace tessera {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 Vec2 unit(double degrees) {
   return {std::cos(degrees * kDeg), std::sin(degrees * kDeg)};
 }

@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "tessera/core/angles.hpp"
+
 namespace tessera {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 class Parser {
  public:

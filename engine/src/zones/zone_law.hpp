@@ -7,11 +7,10 @@
 #include <cstdint>
 #include <numbers>
 
+#include "tessera/core/angles.hpp"
 #include "tessera/zones/zone_model.hpp"
 
 namespace tessera::zone_law {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A Mohr-Coulomb strength: friction and dilation in degrees, cohesion and tension in Pa.
 struct Strength {

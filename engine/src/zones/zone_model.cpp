@@ -154,7 +154,6 @@ bool mohr_coulomb_correct(double bulk, double shear, const Strength& st, ZoneStr
 }  // namespace zone_law
 
 namespace {
-using zone_law::kDeg;
 
 void elastic_step(const ZoneProperties& p, const StrainIncrement& de, ZoneStress& s) {
   zone_law::elastic_step(p.bulk, p.shear, de, s);
