@@ -252,6 +252,16 @@ void detect_contacts(Model& m) {
         std::decay_t<decltype(was)>().swap(was);
       },
       next, old);
+  // Optional arrays stay absent unless the old store held them.
+  Contacts::each_optional(
+      [&](auto& to, auto& was) {
+        if (was.empty()) return;
+        to.assign(count, 0.0);
+        for (size_t k = 0; k < count; ++k)
+          if (from[k] != kNew) to[k] = was[from[k]];
+        std::vector<double>().swap(was);
+      },
+      next, old);
   for (size_t k = 0; k < count; ++k) {
     const Found& f = found[k];
     const FeatureHit hit = found_hit(B, f);

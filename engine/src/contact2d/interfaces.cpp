@@ -202,6 +202,11 @@ void update_interfaces(Model& m) {
   const double roundoff = m.roundoff_gap();
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
+  // Laws other than Coulomb's (cy, barton-bandis, plug-ins) keep a plastic shear history.
+  if (std::any_of(m.joints.begin(), m.joints.end(),
+                  [](const JointProperties& j) { return j.inline_coulomb < 0; }))
+    C.hold(C.plastic);
+  const bool plastic = !C.plastic.empty(), closure = !C.closure.empty();
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
@@ -275,7 +280,8 @@ void update_interfaces(Model& m) {
               C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
               continue;
             }
-            const double overlap = without_roundoff(-C.gap[i] + C.closure[i], roundoff);
+            const double overlap =
+                without_roundoff(-C.gap[i] + (closure ? C.closure[i] : 0.0), roundoff);
             if (-C.gap[i] > depth_limit) too_deep.flag(i);
             const double un = overlap + C.dilation[i];
             if (stays_open(un, C.fn[i], C.flags[i])) {
@@ -295,12 +301,20 @@ void update_interfaces(Model& m) {
                      : Vec2(point_velocity(B, C.a[i], C.point[i]) -
                             point_velocity(B, C.b[i], C.point[i]));
             const double dus = dv.dot(tn) * dt;
-            JointState s{C.fn[i],    C.fs[i], C.un_prev[i], C.dilation[i], C.shear_disp[i],
-                         C.flags[i], 0.0,     0.0,          C.plastic[i]};
+            JointState s{C.fn[i],
+                         C.fs[i],
+                         C.un_prev[i],
+                         C.dilation[i],
+                         C.shear_disp[i],
+                         C.flags[i],
+                         0.0,
+                         0.0,
+                         plastic ? C.plastic[i] : 0.0};
             const JointProperties& jp = m.joints[C.joint[i]];
             joint_update<true>(jp, C.length[i], overlap, dus, 0.0, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
-            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags, C.plastic[i] = s.plastic;
+            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
+            if (plastic) C.plastic[i] = s.plastic;
             double fn = s.fn, fs = s.fs;
             if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
               if (pair_length < 0.0) {

@@ -63,6 +63,7 @@ size_t preload_contacts(Model& m, const StressField& field) {
     const double normal = -n.dot(sn), shear = -t.dot(sn);
     if (normal <= 0.0) continue;
     // Closure measured from the drawn gap, so that the next law call gives exactly normal * L.
+    C.hold(C.closure);
     C.closure[i] = jp.impl->closure(jp, normal) + C.gap[i];
     C.un_prev[i] = C.dilation[i];
     C.fn[i] = 0.0;

@@ -81,8 +81,10 @@ void check_contacts2(Checker& c, const Model& m) {
   c.size(C.joint, n, "contact joints"), c.size(C.tag, n, "contact tags");
   c.size(C.normal, n, "contact normals"), c.size(C.point, n, "contact points");
   for (auto* v : {&C.gap, &C.chord, &C.length, &C.fn, &C.fs, &C.un_prev, &C.dilation, &C.shear_disp,
-                  &C.closure, &C.plastic, &C.force_mag})
+                  &C.force_mag})
     c.size(*v, n, "a contact array");
+  for (auto* v : {&C.closure, &C.plastic})
+    if (!v->empty()) c.size(*v, n, "a contact array held when used");
   c.size(C.force, n, "contact forces");
   if (!c.ok()) return;
   c.require(!C.pair_begin.empty() && C.pair_begin.front() == 0 && C.pair_begin.back() == n,

@@ -111,7 +111,7 @@ void write_contacts(const Model& m, const std::string& path) {
         [&](size_t i) { return std::isfinite(C.gap[i]) ? C.gap[i] : 0.0; });
   array(out, "Float64", "shear_displacement", 1, n, [&](size_t i) { return C.shear_disp[i]; });
   array(out, "Float64", "dilation", 1, n, [&](size_t i) { return C.dilation[i]; });
-  array(out, "Float64", "plastic_shear", 1, n, [&](size_t i) { return C.plastic[i]; });
+  array(out, "Float64", "plastic_shear", 1, n, [&](size_t i) { return C.plastic_at(i); });
   array(out, "Float64", "length", 1, n, [&](size_t i) { return C.length[i]; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(C.flags[i]); });
   array(out, "Int32", "joint_properties", 1, n, [&](size_t i) { return C.joint[i]; });

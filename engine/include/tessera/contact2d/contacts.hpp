@@ -48,11 +48,14 @@ struct Contacts {
   std::vector<Vec2> normal, point;
   std::vector<double> gap, chord, length;
   // Joint law state: normal and shear force on a (compression positive), the normal
-  // displacement of the last cycle, dilation and total shear displacement; `closure`, the
-  // normal displacement the joint had already taken under the in-situ stress (sigma_n / kn), is
-  // added to the overlap like dilation, so that a joint drawn shut starts loaded; the plastic
-  // shear displacement travelled (the history of law=cy and barton-bandis).
-  std::vector<double> fn, fs, un_prev, dilation, shear_disp, closure, plastic;
+  // displacement of the last cycle, dilation and total shear displacement.
+  std::vector<double> fn, fs, un_prev, dilation, shear_disp;
+  // Held only when used (16 bytes a contact otherwise zero): empty, or one per contact.
+  // `closure`, the normal displacement the joint had already taken under the in-situ stress
+  // (sigma_n / kn), is added to the overlap like dilation, so that a joint drawn shut starts
+  // loaded (`insitu`); `plastic`, the plastic shear displacement travelled (the history of
+  // law=cy, barton-bandis and plug-in laws).
+  std::vector<double> closure, plastic;
   // Force on block a this cycle (block b takes the opposite), and |Fn| + |Fs| for the ratio.
   std::vector<Vec2> force;
   std::vector<double> force_mag;
@@ -61,15 +64,26 @@ struct Contacts {
 
   size_t size() const { return a.size(); }
   size_t pair_count() const { return pair_begin.size() - 1; }
+  double closure_at(size_t i) const { return closure.empty() ? 0.0 : closure[i]; }
+  double plastic_at(size_t i) const { return plastic.empty() ? 0.0 : plastic[i]; }
+  // Gives an optional array (closure, plastic) one zero per contact if it has none.
+  void hold(std::vector<double>& optional) {
+    if (optional.empty()) optional.assign(size(), 0.0);
+  }
   void clear();
-  // Applies f to every per-contact array (not pair_begin) of one or more stores at once:
-  // f(x.a, y.a), f(x.b, y.b), ...
+  // Applies f to every per-contact array always held (not pair_begin, closure or plastic) of
+  // one or more stores at once: f(x.a, y.a), f(x.b, y.b), ...
   template <class F, class... Cs>
   static void each_array(F&& f, Cs&... c) {
     f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
     f(c.flags...), f(c.joint...), f(c.tag...), f(c.normal...), f(c.point...), f(c.gap...);
     f(c.chord...), f(c.length...), f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...);
-    f(c.shear_disp...), f(c.closure...), f(c.plastic...), f(c.force...), f(c.force_mag...);
+    f(c.shear_disp...), f(c.force...), f(c.force_mag...);
+  }
+  // The same for the arrays held only when used.
+  template <class F, class... Cs>
+  static void each_optional(F&& f, Cs&... c) {
+    f(c.closure...), f(c.plastic...);
   }
   template <class F>
   void for_each_array(F&& f) {
