@@ -40,28 +40,28 @@ double along(const Vec3& x, const Vec3& n, const Vec3& mn, double d) {
 }
 
 // The opposite side of a node sub-contact: a rigid face's plane, or the surface triangle of a
-// deformable face (its nodes and weights in s) - the point met along n from the node, as t.
-double meet_opposite(const Model& m, const Contact3& c, const SubContact& s, const Vec3& n,
+// deformable face (its nodes and weights in l) - the point met along n from the node, as t.
+double meet_opposite(const Model& m, const Contact3& c, const NodeLink& l, const Vec3& n,
                      const Vec3& x) {
   const Blocks3& B = m.blocks3;
-  if (s.tri[0] < 0) {
-    const uint32_t f = s.node_side == 0 ? c.face_b : c.face_a;
+  if (l.tri[0] < 0) {
+    const uint32_t f = l.side == 0 ? c.face_b : c.face_a;
     return along(x, n, B.world_normal[f], B.world_offset[f]);
   }
   const std::vector<Vec3>& pos = m.continuum3.pos;
-  const Vec3& p0 = pos[static_cast<size_t>(s.tri[0])];
-  const Vec3 mt = (pos[static_cast<size_t>(s.tri[1])] - p0)
-                      .cross(pos[static_cast<size_t>(s.tri[2])] - p0)
+  const Vec3& p0 = pos[static_cast<size_t>(l.tri[0])];
+  const Vec3 mt = (pos[static_cast<size_t>(l.tri[1])] - p0)
+                      .cross(pos[static_cast<size_t>(l.tri[2])] - p0)
                       .normalized();
   return along(x, n, mt, mt.dot(p0));
 }
 
 // Gap and point of a node sub-contact from the node's position and the opposite side.
-void measure(const Model& m, const Contact3& c, SubContact& s, const Vec3& n) {
-  const Vec3& x = m.continuum3.pos[static_cast<size_t>(s.node)];
-  const double t = meet_opposite(m, c, s, n, x);
+void measure(const Model& m, const Contact3& c, const NodeLink& l, SubContact& s, const Vec3& n) {
+  const Vec3& x = m.continuum3.pos[static_cast<size_t>(l.node)];
+  const double t = meet_opposite(m, c, l, n, x);
   // The node is on a (the plane's positive side) or on b.
-  s.gap = s.node_side == 0 ? -t : t;
+  s.gap = l.side == 0 ? -t : t;
   s.point = x + 0.5 * t * n;
 }
 
@@ -123,13 +123,14 @@ void side_subcontacts(const Model& m, Contact3& c, const Vec3& n, int side, doub
   const Vec3 other_normal = B.world_normal[other_face];
   for (size_t i = 0; i < w.share.size();) {
     SubContact s;
-    s.node = static_cast<int32_t>(w.share[i].first);
-    s.node_side = static_cast<uint8_t>(side);
+    NodeLink nl;
+    nl.node = static_cast<int32_t>(w.share[i].first);
+    nl.side = static_cast<uint8_t>(side);
     s.key = kKeyNode | (side ? kKeyNodeB : 0) | w.share[i].first;
-    for (; i < w.share.size() && static_cast<int32_t>(w.share[i].first) == s.node; ++i)
+    for (; i < w.share.size() && static_cast<int32_t>(w.share[i].first) == nl.node; ++i)
       s.area += w.share[i].second;
     if (std::abs(other_normal.dot(n)) < 0.05) continue;
-    const Vec3& x = z.pos[static_cast<size_t>(s.node)];
+    const Vec3& x = z.pos[static_cast<size_t>(nl.node)];
     if (other_deformable) {
       // The other face's surface triangle the node faces: the one it is most inside of.
       const Vec2d px = project(x);
@@ -140,15 +141,17 @@ void side_subcontacts(const Model& m, Contact3& c, const Vec3& n, int side, doub
             barycentric({project(z.pos[t[0]]), project(z.pos[t[1]]), project(z.pos[t[2]])}, px);
         if (l.minCoeff() > best) {
           best = l.minCoeff();
-          for (int j = 0; j < 3; ++j) s.tri[j] = static_cast<int32_t>(t[j]);
+          for (int j = 0; j < 3; ++j) nl.tri[j] = static_cast<int32_t>(t[j]);
           // (its force and the velocity it sees in the same weights; the gap is to the plane)
-          s.weight = mid_edge_weights(t, l.cwiseMax(0.0) / l.cwiseMax(0.0).sum(), z.edge_node);
+          nl.weight = mid_edge_weights(t, l.cwiseMax(0.0) / l.cwiseMax(0.0).sum(), z.edge_node);
         }
       }
     }
-    measure(m, c, s, n);
+    measure(m, c, nl, s, n);
     carry_state(m, c, s, w.old, w.used);
+    s.link = static_cast<int32_t>(c.nodes.size());
     c.subs.push_back(s);
+    c.nodes.push_back(nl);
   }
 }
 
@@ -158,7 +161,7 @@ void rebuild_node_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   const Blocks3& B = m.blocks3;
   NodeWork& w = node_work;
   w.old.swap(c.subs);
-  c.subs.clear();
+  c.subs.clear(), c.nodes.clear();
   w.used.assign(w.old.size(), 0);
   // Both faces deformable: both node sets act, each with half the area.
   const bool both = B.deformable[c.a] && B.deformable[c.b];
@@ -168,7 +171,7 @@ void rebuild_node_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
 
 void follow_node_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   c.normal = n;
-  for (SubContact& s : c.subs) measure(m, c, s, n);
+  for (SubContact& s : c.subs) measure(m, c, c.nodes[static_cast<size_t>(s.link)], s, n);
 }
 
 Vec3 side_velocity(const Model& m, const Contact3& c, const SubContact& s, int side) {
@@ -179,9 +182,10 @@ Vec3 side_velocity(const Model& m, const Contact3& c, const SubContact& s, int s
     return B.body[mb].velocity + B.omega[mb].cross(s.point - B.body[mb].position);
   }
   const std::vector<Vec3>& vel = m.continuum3.vel;
-  if (s.node_side == side) return vel[static_cast<size_t>(s.node)];
+  const NodeLink& l = c.nodes[static_cast<size_t>(s.link)];
+  if (l.side == side) return vel[static_cast<size_t>(l.node)];
   Vec3 v = Vec3::Zero();
-  for (int i = 0; i < 3; ++i) v += s.weight[i] * vel[static_cast<size_t>(s.tri[i])];
+  for (int i = 0; i < 3; ++i) v += l.weight[i] * vel[static_cast<size_t>(l.tri[i])];
   return v;
 }
 

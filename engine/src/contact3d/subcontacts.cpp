@@ -110,7 +110,7 @@ void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   for (const PolyVertex& v : w.poly) centre += v.p;
   if (np) centre /= static_cast<double>(np);
   w.old.swap(c.subs);
-  c.subs.clear();
+  c.subs.clear(), c.nodes.clear();
   const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
   const double mna = ma.dot(n), mnb = mb.dot(n);
@@ -243,7 +243,7 @@ double joint_forces3(const Model& m, Contact3& c) {
     const double un = overlap + s.dilation;
     if (stays_open(un, s.fn, s.flags)) {
       s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();
-      if (s.node >= 0)
+      if (s.link >= 0)
         fastest = std::max(fastest,
                            (side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1)).squaredNorm());
       continue;
@@ -257,7 +257,7 @@ double joint_forces3(const Model& m, Contact3& c) {
       fs *= std::sqrt(fs2 / fs.squaredNorm());
     }
     const Vec3 ra = s.point - ba.position;
-    const Vec3 dv = s.node < 0 ? Vec3(v0 + dw.cross(ra))
+    const Vec3 dv = s.link < 0 ? Vec3(v0 + dw.cross(ra))
                                : Vec3(side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1));
     fastest = std::max(fastest, dv.squaredNorm());
     JointState st{s.fn,    fs.dot(t1), s.un_prev, s.dilation, s.sd1,

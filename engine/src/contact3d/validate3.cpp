@@ -42,9 +42,12 @@ void validate3d(const Model& m) {
             "contact", i, "faces a face of another block");
     require(finite(c.force) && finite(c.torque_a) && finite(c.torque_b), "contact", i,
             "force is not finite");
-    for (const SubContact& s : c.subs)
+    for (const SubContact& s : c.subs) {
       require(finite(s.point) && std::isfinite(s.area) && s.area >= 0.0 && finite(s.force),
               "contact", i, "has a sub-contact that is not finite");
+      require(s.link >= -1 && s.link < static_cast<int64_t>(c.nodes.size()), "contact", i,
+              "has a sub-contact whose node is not listed");
+    }
   }
   const std::string lists = m.block_contacts_problem();
   require(lists.empty(), lists.c_str());

@@ -198,9 +198,12 @@ void check_blocks3(Checker& c, const Model& m) {
                                       k.ib >= B.dir_begin[k.b] && k.ib < B.dir_begin[k.b + 1]
                                 : false;
     c.require(fits, who + " has a common plane from features of other blocks");
-    for (const SubContact& s : k.subs) {
-      bool nodes = s.node >= -1 && s.node < int64_t(nn) && s.node_side < 2;
-      for (int32_t t : s.tri) nodes = nodes && t >= -1 && t < int64_t(nn);
+    for (const SubContact& s : k.subs)
+      c.require(s.link >= -1 && s.link < int64_t(k.nodes.size()),
+                who + " has a sub-contact whose node is not listed");
+    for (const NodeLink& l : k.nodes) {
+      bool nodes = l.node >= 0 && l.node < int64_t(nn) && l.side < 2;
+      for (int32_t t : l.tri) nodes = nodes && t >= -1 && t < int64_t(nn);
       c.require(nodes, who + " has a sub-contact at a node that does not exist");
     }
   }

@@ -17,8 +17,11 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 16;
+constexpr uint32_t kVersion = 17;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
+// Sub-contacts and their node links are written as their bytes: a change of either's layout
+// changes the file, and kVersion with it.
+static_assert(sizeof(SubContact) == 160 && sizeof(NodeLink) == 48);
 
 // Records written as their bytes whose structs have padding: their members, so that the padding
 // can be written as zeros (it holds whatever the memory held, and a state file of the same model
@@ -26,16 +29,19 @@ static_assert(sizeof(Vec2) == 2 * sizeof(double));
 template <class F>
 void members(const SubContact& s, F f) {
   f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
-  f(s.sd2), f(s.fs), f(s.flags), f(s.plastic), f(s.force), f(s.node), f(s.node_side), f(s.tri),
-      f(s.weight);
-  f(s.closure);
+  f(s.sd2), f(s.fs), f(s.flags), f(s.plastic), f(s.force), f(s.link), f(s.closure);
+}
+template <class F>
+void members(const NodeLink& l, F f) {
+  f(l.node), f(l.side), f(l.tri), f(l.weight);
 }
 template <class F>
 void members(const RigidBody3& b, F f) {
   f(b.mass), f(b.principal), f(b.orientation), f(b.position), f(b.velocity), f(b.momentum);
 }
 template <class T>
-constexpr bool kPadded = std::is_same_v<T, SubContact> || std::is_same_v<T, RigidBody3>;
+constexpr bool kPadded =
+    std::is_same_v<T, SubContact> || std::is_same_v<T, NodeLink> || std::is_same_v<T, RigidBody3>;
 
 class Writer {
  public:
@@ -252,7 +258,7 @@ void fields(IO& io, auto& m) {
     io.pod(c.a), io.pod(c.b), io.pod(c.joint), io.pod(c.tag), io.pod(c.kind), io.pod(c.ia);
     io.pod(c.ib), io.pod(c.face_a), io.pod(c.face_b), io.pod(c.type);
     for (int k = 0; k < 3; ++k) io.pod(c.normal[k]);
-    io.pod(c.offset), io.pod(c.gap), io.vec(c.subs);
+    io.pod(c.offset), io.pod(c.gap), io.vec(c.subs), io.vec(c.nodes);
     for (int k = 0; k < 3; ++k) io.pod(c.force[k]), io.pod(c.torque_a[k]), io.pod(c.torque_b[k]);
     io.pod(c.force_mag), io.pod(c.drift);
   }

@@ -162,13 +162,14 @@ void add_contact_forces_to_nodes3(Model& m) {
       const uint8_t side = m.block_contacts[k] & 1;
       const double sign = side ? -1.0 : 1.0;  // a sub-contact's force is on a
       for (const SubContact& s : ct.subs) {
-        if (s.node < 0) continue;
-        if (s.node_side == side) {
-          add_node_force(c, static_cast<size_t>(s.node), Vec3(sign * s.force));
+        if (s.link < 0) continue;
+        const NodeLink& l = ct.nodes[static_cast<size_t>(s.link)];
+        if (l.side == side) {
+          add_node_force(c, static_cast<size_t>(l.node), Vec3(sign * s.force));
         } else {
           for (int i = 0; i < 3; ++i)
-            if (s.tri[i] >= 0)
-              add_node_force(c, static_cast<size_t>(s.tri[i]), Vec3(sign * s.weight[i] * s.force));
+            if (l.tri[i] >= 0)
+              add_node_force(c, static_cast<size_t>(l.tri[i]), Vec3(sign * l.weight[i] * s.force));
         }
       }
     }

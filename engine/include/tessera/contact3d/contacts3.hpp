@@ -54,6 +54,17 @@ enum PlaneKind : uint8_t { kPlaneFaceB = 0, kPlaneFaceA = 1, kPlaneEdges = 2 };
 // What touches, from how many vertices of each block lie within the tolerance of the plane.
 enum ContactType3 : uint8_t { kVertexFace = 0, kEdgeEdge = 1, kEdgeFace = 2, kFaceFace = 3 };
 
+// A surface node of a deformable block against the other block's face (§5.3.2): the node, its
+// side (0: a, 1: b), and on a deformable opposite face the surface triangle met, with the
+// weights that share its motion and force.
+struct NodeLink {
+  int32_t node = -1;
+  uint8_t side = 0;
+  std::array<int32_t, 3> tri{-1, -1, -1};
+  Vec3 weight = Vec3::Zero();
+};
+
+// 160 bytes: what the cycle reads and writes at a corner of the overlap or at a node.
 struct SubContact {
   uint64_t key = 0;
   Vec3 point = Vec3::Zero();  // on the common plane
@@ -64,15 +75,9 @@ struct SubContact {
   double closure = 0.0;  // in-situ closure sigma_n / kn added to the overlap (as 2D's)
   double plastic = 0.0;  // plastic shear displacement travelled (law=cy, barton-bandis)
   Vec3 fs = Vec3::Zero();
-  uint8_t flags = 0;
   Vec3 force = Vec3::Zero();  // on a this cycle
-  // A surface node of a deformable block against the other block's face (§5.3.2): the node
-  // (-1 for a corner of two rigid faces' overlap), its side (0: a, 1: b), and on a deformable
-  // opposite face the surface triangle met, with the weights that share its motion and force.
-  int32_t node = -1;
-  uint8_t node_side = 0;
-  std::array<int32_t, 3> tri{-1, -1, -1};
-  Vec3 weight = Vec3::Zero();
+  int32_t link = -1;          // its node in the contact's `nodes`; -1 at a corner of rigid faces
+  uint8_t flags = 0;
 };
 
 struct Contact3 {
@@ -91,6 +96,8 @@ struct Contact3 {
   // reach); a new contact starts due.
   double drift = 1e300;
   std::vector<SubContact> subs;
+  // The nodes of the node sub-contacts (a deformable block's side), none between rigid blocks.
+  std::vector<NodeLink> nodes;
   // Resultant on a this cycle (b takes the opposite), with the torques about each centroid, and
   // the sum of |Fn| + |Fs| over the sub-contacts.
   Vec3 force = Vec3::Zero(), torque_a = Vec3::Zero(), torque_b = Vec3::Zero();
