@@ -240,26 +240,22 @@ void detect_contacts(Model& m) {
   }
   const size_t count = found.size();
   Contacts next;
-  Contacts::each_array(
-      [&](auto& to, auto& was) {
-        using T = typename std::decay_t<decltype(to)>::value_type;
-        if constexpr (std::is_arithmetic_v<T>)
-          to.assign(count, T(0));
-        else
-          to.assign(count, T::Zero());
-        for (size_t k = 0; k < count; ++k)
-          if (from[k] != kNew) to[k] = was[from[k]];
-        std::decay_t<decltype(was)>().swap(was);
-      },
-      next, old);
+  // Each array gathered from the old store (zeros for new contacts), the old one freed at once.
+  const auto gather = [&](auto& to, auto& was) {
+    using T = typename std::decay_t<decltype(to)>::value_type;
+    if constexpr (std::is_arithmetic_v<T>)
+      to.assign(count, T(0));
+    else
+      to.assign(count, T::Zero());
+    for (size_t k = 0; k < count; ++k)
+      if (from[k] != kNew) to[k] = was[from[k]];
+    std::decay_t<decltype(was)>().swap(was);
+  };
+  Contacts::each_array(gather, next, old);
   // Optional arrays stay absent unless the old store held them.
   Contacts::each_optional(
       [&](auto& to, auto& was) {
-        if (was.empty()) return;
-        to.assign(count, 0.0);
-        for (size_t k = 0; k < count; ++k)
-          if (from[k] != kNew) to[k] = was[from[k]];
-        std::vector<double>().swap(was);
+        if (!was.empty()) gather(to, was);
       },
       next, old);
   for (size_t k = 0; k < count; ++k) {

@@ -206,7 +206,7 @@ void update_interfaces(Model& m) {
   if (std::any_of(m.joints.begin(), m.joints.end(),
                   [](const JointProperties& j) { return j.inline_coulomb < 0; }))
     C.hold(C.plastic);
-  const bool plastic = !C.plastic.empty(), closure = !C.closure.empty();
+  const bool plastic = !C.plastic.empty();
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
@@ -280,8 +280,7 @@ void update_interfaces(Model& m) {
               C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
               continue;
             }
-            const double overlap =
-                without_roundoff(-C.gap[i] + (closure ? C.closure[i] : 0.0), roundoff);
+            const double overlap = without_roundoff(-C.gap[i] + C.closure_at(i), roundoff);
             if (-C.gap[i] > depth_limit) too_deep.flag(i);
             const double un = overlap + C.dilation[i];
             if (stays_open(un, C.fn[i], C.flags[i])) {
@@ -301,15 +300,8 @@ void update_interfaces(Model& m) {
                      : Vec2(point_velocity(B, C.a[i], C.point[i]) -
                             point_velocity(B, C.b[i], C.point[i]));
             const double dus = dv.dot(tn) * dt;
-            JointState s{C.fn[i],
-                         C.fs[i],
-                         C.un_prev[i],
-                         C.dilation[i],
-                         C.shear_disp[i],
-                         C.flags[i],
-                         0.0,
-                         0.0,
-                         plastic ? C.plastic[i] : 0.0};
+            JointState s{C.fn[i],    C.fs[i], C.un_prev[i], C.dilation[i],  C.shear_disp[i],
+                         C.flags[i], 0.0,     0.0,          C.plastic_at(i)};
             const JointProperties& jp = m.joints[C.joint[i]];
             joint_update<true>(jp, C.length[i], overlap, dus, 0.0, s);
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
