@@ -182,6 +182,34 @@ class TestCore : public QObject {
     QVERIFY(state_hash(back) != 0);
   }
 
+  // A 2D contact holds the in-situ closure and the plastic shear history only when used: under
+  // Coulomb's law and no `insitu`, neither; a law with a history (cy) holds `plastic` for every
+  // contact, `insitu` holds `closure`; a saved state keeps what is held.
+  void contactHistoryHeldOnlyWhenUsed() {
+    ScriptRun plain, cy, preloaded;
+    plain.run(scene(false) + "step 20");
+    cy.run(scene(false,
+                 "joint define j law=cy kn=1e9 ks=1e9 friction=30 ifriction=45 "
+                 "roughness=1e-3\n") +
+           "step 20");
+    preloaded.run(scene(false) + "insitu stress=-1e4,-1e4,0\nstep 20");
+    const Contacts &p = plain.model().contacts, &c = cy.model().contacts,
+                   &i = preloaded.model().contacts;
+    QVERIFY(p.size() > 0 && c.size() > 0 && i.size() > 0);
+    QVERIFY(p.closure.empty() && p.plastic.empty());
+    QCOMPARE(c.plastic.size(), c.size());
+    QVERIFY(c.closure.empty());
+    QCOMPARE(i.closure.size(), i.size());
+    QVERIFY(i.plastic.empty());
+    for (ScriptRun* r : {&plain, &cy, &preloaded}) {
+      const std::string file = r->path("held.state");
+      save_state(r->model(), file);
+      const Model back = restore_state(file);
+      QCOMPARE(back.contacts.closure.size(), r->model().contacts.closure.size());
+      QCOMPARE(back.contacts.plastic.size(), r->model().contacts.plastic.size());
+    }
+  }
+
   // One thread or two: the same bits.
   void sameAtEveryThreadCount_data() { dimensions(); }
   void sameAtEveryThreadCount() {

@@ -307,6 +307,25 @@ class TestDeformable3 : public QObject {
     QCOMPARE(hash[0], hash[1]);
   }
 
+  // A node sub-contact's node, side and triangle live in its contact's `nodes`: one per node
+  // sub-contact where a zoned block touches, none where two rigid blocks do.
+  void nodeLinksOnlyWhereADeformableBlockTouches() {
+    ScriptRun r;
+    r.run(stack(2, 1, 1e9, kRollers) + "block box 1.5,0,0 2,0.5,0.5 material=stone\nstep 20");
+    const Model& m = r.model();
+    size_t rigid = 0, soft = 0;
+    for (const Contact3& c : m.contacts3) {
+      const bool zoned = m.blocks3.deformable[c.a] || m.blocks3.deformable[c.b];
+      if (c.subs.empty()) continue;
+      (zoned ? soft : rigid)++;
+      QCOMPARE(c.nodes.size(), zoned ? c.subs.size() : size_t(0));
+      for (size_t k = 0; k < c.subs.size(); ++k)
+        QCOMPARE(c.subs[k].link, zoned ? static_cast<int32_t>(k) : -1);
+    }
+    QVERIFY(rigid >= 1);
+    QVERIFY(soft >= 2);
+  }
+
   // Excavating one of two stacked cubes removes its nodes and zones; the other keeps its own.
   void deletingADeformableBlock_data() { orders(); }
   void deletingADeformableBlock() {
