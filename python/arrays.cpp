@@ -198,9 +198,14 @@ const Spec kContacts[] = {
      [](const Model& m, py::handle o) {
        return m.dim == 3 ? member(m.contacts3, &Contact3::normal, o) : whole(m.contacts.normal, o);
      }},
-    {"force", "force on the first block this cycle (n, dim) (view)",
+    {"force", "force on the first block this cycle (n, dim): 2D (copy), 3D (view)",
      [](const Model& m, py::handle o) {
-       return m.dim == 3 ? member(m.contacts3, &Contact3::force, o) : whole(m.contacts.force, o);
+       if (m.dim == 3) return member(m.contacts3, &Contact3::force, o);
+       const Contacts& C = m.contacts;
+       return copy<double>(C.size(), 2, [&](size_t i, double* row) {
+         const Vec2 f = C.force(i);
+         row[0] = f.x(), row[1] = f.y();
+       });
      }},
     {"gap", "gap (n,), m, negative when overlapping (view)",
      [](const Model& m, py::handle o) {

@@ -20,8 +20,8 @@ const char* kSetup =
 double contact_lift(const Model& m, size_t b) {
   double fy = 0.0;
   for (size_t i = 0; i < m.contacts.size(); ++i) {
-    if (m.contacts.a[i] == b) fy += m.contacts.force[i].y();
-    if (m.contacts.b[i] == b) fy -= m.contacts.force[i].y();
+    if (m.contacts.a[i] == b) fy += m.contacts.force(i).y();
+    if (m.contacts.b[i] == b) fy -= m.contacts.force(i).y();
   }
   return fy;
 }

@@ -209,6 +209,36 @@ class TestCore : public QObject {
       QCOMPARE(back.contacts.plastic.size(), r->model().contacts.plastic.size());
     }
   }
+  // The 2D contact force is formed from the law's forces and, only while a joint is damped, the
+  // dashpot's, which are kept for it (and saved with the state).
+  void contactForceFormedWithTheDashpot() {
+    const std::string damped =
+        "joint define j kn=1e9 ks=1e9 friction=40 ndamping=0.3 sdamping=0.3\n";
+    ScriptRun plain, r;
+    plain.run(scene(false) + "step 20");
+    QVERIFY(plain.model().contacts.damp_fn.empty() && plain.model().contacts.damp_fs.empty());
+    r.run(scene(false, damped) + "step 20");
+    const Contacts& C = r.model().contacts;
+    QVERIFY(C.size() > 0);
+    QCOMPARE(C.damp_fn.size(), C.size());
+    QCOMPARE(C.damp_fs.size(), C.size());
+    // The block is still landing: its dashpots push back, and the force on it is the springs'
+    // and the dashpots' together.
+    double dash = 0.0, total = 0.0, parts = 0.0;
+    for (size_t i = 0; i < C.size(); ++i) {
+      dash += std::abs(C.damp_fn[i]);
+      total += C.force(i).dot(C.normal[i]), parts += C.fn[i] + C.damp_fn[i];
+    }
+    QVERIFY(dash > 0.0);
+    QVERIFY(std::abs(total - parts) <= 1e-12 * std::abs(total));
+    const std::string file = r.path("damped.state");
+    save_state(r.model(), file);
+    const Model back = restore_state(file);
+    for (size_t i = 0; i < C.size(); ++i) QCOMPARE(back.contacts.force(i), C.force(i));
+    // Damping taken off: the dashpot arrays go.
+    r.run("joint define j kn=1e9 ks=1e9 friction=40 ndamping=0 sdamping=0\nstep 1");
+    QVERIFY(r.model().contacts.damp_fn.empty() && r.model().contacts.damp_fs.empty());
+  }
 
   // One thread or two: the same bits.
   void sameAtEveryThreadCount_data() { dimensions(); }

@@ -155,7 +155,7 @@ class TestDynamics : public QObject {
     const auto carried = [&] {
       double f = 0.0;
       for (const Contact3& c : m.contacts3) f += c.force.norm();
-      for (size_t i = 0; i < m.contacts.size(); ++i) f += m.contacts.force[i].norm();
+      for (size_t i = 0; i < m.contacts.size(); ++i) f += m.contacts.force(i).norm();
       return f;
     };
     // Until the block has met the joint and left it again.

@@ -118,7 +118,7 @@ class TestLoads : public QObject {
     const Model& m = r.model();
     double carried = 0.0;
     if (dim == 2)
-      for (size_t i = 0; i < m.contacts.size(); ++i) carried += std::abs(m.contacts.force[i].y());
+      for (size_t i = 0; i < m.contacts.size(); ++i) carried += std::abs(m.contacts.force(i).y());
     else
       for (const Contact3& c : m.contacts3) carried += std::abs(c.force.z());
     qInfo("joint carries %.2f N, W + F = %.2f N", carried, weight + press);

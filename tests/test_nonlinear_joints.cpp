@@ -141,7 +141,7 @@ BlockShear shear_block(int dim, const std::string& joint, double total,
     } else {
       for (size_t i = 0; i < m.contacts.size(); ++i) {
         const double sign = m.contacts.a[i] == 1 ? 1.0 : -1.0;
-        fs += sign * m.contacts.force[i].x(), fn += sign * m.contacts.force[i].y();
+        fs += sign * m.contacts.force(i).x(), fn += sign * m.contacts.force(i).y();
       }
     }
     out.sigma_n = fn / test::joint_size(m);

@@ -44,10 +44,10 @@ void resultants2d(Model& m) {
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t i = m.block_contacts[k] >> 1;
         const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
-        const Vec2 f = sign * C.force[i];
+        const Vec2 f = sign * C.force(i);
         fx += f.x(), fy += f.y();
         mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
-        applied += C.force_mag[i];
+        applied += C.force_mag(i);
       }
       B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
     }

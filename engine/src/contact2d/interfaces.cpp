@@ -207,6 +207,15 @@ void update_interfaces(Model& m) {
                   [](const JointProperties& j) { return j.inline_coulomb < 0; }))
     C.hold(C.plastic);
   const bool plastic = !C.plastic.empty();
+  // Damped joints keep their dashpot's forces beside the springs' (released when none is).
+  const bool damped = std::any_of(m.joints.begin(), m.joints.end(), [](const JointProperties& j) {
+    return j.normal_damping > 0.0 || j.shear_damping > 0.0;
+  });
+  if (damped) {
+    C.hold(C.damp_fn), C.hold(C.damp_fs);
+  } else {
+    std::vector<double>().swap(C.damp_fn), std::vector<double>().swap(C.damp_fs);
+  }
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
@@ -277,14 +286,15 @@ void update_interfaces(Model& m) {
                 C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
               C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
               C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
-              C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+              if (damped) C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
               continue;
             }
             const double overlap = without_roundoff(-C.gap[i] + C.closure_at(i), roundoff);
             if (-C.gap[i] > depth_limit) too_deep.flag(i);
             const double un = overlap + C.dilation[i];
             if (stays_open(un, C.fn[i], C.flags[i])) {
-              C.fs[i] = 0.0, C.un_prev[i] = un, C.force[i] = Vec2::Zero(), C.force_mag[i] = 0.0;
+              C.fs[i] = 0.0, C.un_prev[i] = un;
+              if (damped) C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
               C.flags[i] &= static_cast<uint8_t>(~kPreload);
               continue;
             }
@@ -307,7 +317,8 @@ void update_interfaces(Model& m) {
             C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
             C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
             if (plastic) C.plastic[i] = s.plastic;
-            double fn = s.fn, fs = s.fs;
+            if (!damped) continue;
+            C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
             if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
               if (pair_length < 0.0) {
                 pair_length = 0.0;
@@ -316,10 +327,8 @@ void update_interfaces(Model& m) {
               const Dashpot d = contact_dashpot(jp, C.length[i], C.length[i] / pair_length,
                                                 pair_mass(B, C.a[i], C.b[i]), -dv.dot(n),
                                                 dv.dot(tn), 0.0, s.flags & kSlipping);
-              fn += d.fn, fs += d.fs;
+              C.damp_fn[i] = d.fn, C.damp_fs[i] = d.fs;
             }
-            C.force[i] = fn * n + fs * tn;
-            C.force_mag[i] = std::abs(fn) + std::abs(fs);
           }
         }
       },

@@ -33,7 +33,7 @@ void validate2d(const Model& m) {
       require(C.feature[i] >= B.vert_begin[C.b[i]] && C.feature[i] < B.vert_begin[C.b[i] + 1],
               "contact", i, "faces a feature of another block");
     require(C.joint[i] < m.joints.size(), "contact", i, "has no joint properties");
-    require(std::isfinite(C.force[i].x()) && std::isfinite(C.force[i].y()), "contact", i,
+    require(std::isfinite(C.force(i).x()) && std::isfinite(C.force(i).y()), "contact", i,
             "force is not finite");
   }
   const std::string lists = m.block_contacts_problem();

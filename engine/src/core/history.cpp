@@ -143,7 +143,7 @@ double pair_force(const Model& m, size_t a, size_t b, bool normal) {
   } else {
     const Contacts& C = m.contacts;
     for (size_t i = 0; i < C.size(); ++i)
-      add(C.a[i], C.b[i], C.fn[i], Vec3(C.force[i].x(), C.force[i].y(), 0.0),
+      add(C.a[i], C.b[i], C.fn[i], Vec3(C.force(i).x(), C.force(i).y(), 0.0),
           Vec3(C.normal[i].x(), C.normal[i].y(), 0.0));
   }
   return normal ? fn : shear.norm();

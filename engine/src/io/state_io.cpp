@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 17;
+constexpr uint32_t kVersion = 18;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 // Sub-contacts and their node links are written as their bytes: a change of either's layout
 // changes the file, and kVersion with it.
@@ -174,7 +174,7 @@ void fields(IO& io, auto& m) {
   io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
   io.vec(C.shear_disp), io.vec(C.closure), io.vec(C.plastic);
-  io.vec(C.force), io.vec(C.force_mag), io.vec(C.pair_begin);
+  io.vec(C.damp_fn), io.vec(C.damp_fs), io.vec(C.pair_begin);
   uint64_t count = m.materials.size();
   io.items(count);
   m.materials.resize(count);

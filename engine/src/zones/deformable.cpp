@@ -301,7 +301,7 @@ void add_contact_forces_to_nodes(Model& m) {
     for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
       const uint32_t i = m.block_contacts[k] >> 1;
       const bool side_b = m.block_contacts[k] & 1;
-      const Vec2 f = side_b ? Vec2(-C.force[i]) : C.force[i];
+      const Vec2 f = side_b ? Vec2(-C.force(i)) : C.force(i);
       if (!side_b) {
         add_node_force(c, static_cast<size_t>(B.node[C.corner[i]]), f);
         continue;

@@ -23,6 +23,7 @@
 // moved half the tolerance since the last pass (a Verlet list), so a touch can never be missed.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -56,9 +57,9 @@ struct Contacts {
   // loaded (`insitu`); `plastic`, the plastic shear displacement travelled (the history of
   // law=cy, barton-bandis and plug-in laws).
   std::vector<double> closure, plastic;
-  // Force on block a this cycle (block b takes the opposite), and |Fn| + |Fs| for the ratio.
-  std::vector<Vec2> force;
-  std::vector<double> force_mag;
+  // The dashpot's normal and shear force this cycle, held only while some joint is damped: the
+  // force on the blocks is the spring's (fn, fs) plus these.
+  std::vector<double> damp_fn, damp_fs;
   // Interface ranges: contacts of pair p are [pair_begin[p], pair_begin[p+1]).
   std::vector<uint32_t> pair_begin{0};
 
@@ -66,24 +67,32 @@ struct Contacts {
   size_t pair_count() const { return pair_begin.size() - 1; }
   double closure_at(size_t i) const { return closure.empty() ? 0.0 : closure[i]; }
   double plastic_at(size_t i) const { return plastic.empty() ? 0.0 : plastic[i]; }
-  // Gives an optional array (closure, plastic) one zero per contact if it has none.
+  // Normal and shear force on block a this cycle, dashpot included (compression positive).
+  double total_fn(size_t i) const { return damp_fn.empty() ? fn[i] : fn[i] + damp_fn[i]; }
+  double total_fs(size_t i) const { return damp_fs.empty() ? fs[i] : fs[i] + damp_fs[i]; }
+  // Force on block a this cycle (block b takes the opposite), formed from the law's forces
+  // rather than kept (24 bytes a contact), and |Fn| + |Fs| for the unbalanced-force ratio.
+  Vec2 force(size_t i) const { return total_fn(i) * normal[i] + total_fs(i) * perp(normal[i]); }
+  double force_mag(size_t i) const { return std::abs(total_fn(i)) + std::abs(total_fs(i)); }
+  // Gives an optional array (closure, plastic, damp_fn, damp_fs) one zero per contact if it has
+  // none.
   void hold(std::vector<double>& optional) {
     if (optional.empty()) optional.assign(size(), 0.0);
   }
   void clear();
-  // Applies f to every per-contact array always held (not pair_begin, closure or plastic) of
+  // Applies f to every per-contact array always held (not pair_begin or the optional ones) of
   // one or more stores at once: f(x.a, y.a), f(x.b, y.b), ...
   template <class F, class... Cs>
   static void each_array(F&& f, Cs&... c) {
     f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
     f(c.flags...), f(c.joint...), f(c.tag...), f(c.normal...), f(c.point...), f(c.gap...);
     f(c.chord...), f(c.length...), f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...);
-    f(c.shear_disp...), f(c.force...), f(c.force_mag...);
+    f(c.shear_disp...);
   }
   // The same for the arrays held only when used.
   template <class F, class... Cs>
   static void each_optional(F&& f, Cs&... c) {
-    f(c.closure...), f(c.plastic...);
+    f(c.closure...), f(c.plastic...), f(c.damp_fn...), f(c.damp_fs...);
   }
   template <class F>
   void for_each_array(F&& f) {
