@@ -100,8 +100,8 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
 }
 
 // A contact found in this pass: corner `corner` of `owner` against the feature of `other` it
-// meets, the feature's vertex index with its kind and slot in the top bits (16 bytes: a pass
-// holds one per contact; the geometry is computed again from these when the contact is stored).
+// meets, the feature's vertex index with its kind and slot in the top bits (a pass holds one
+// pair's; the geometry is computed again from these when the contact is stored).
 struct Found {
   uint32_t owner, corner, other, packed;
   Found(uint32_t o, uint32_t c, uint32_t b, uint32_t feature, uint8_t slot, uint8_t kind)
@@ -175,22 +175,19 @@ void detect_contacts(Model& m) {
   std::vector<uint8_t> fixed(n);
   for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
   const auto pairs = broad_phase(boxes, fixed);
-  // Narrow phase, pair by pair in sorted order. Room for about as many finds as last time, or
-  // on a first pass three a pair (two or three corners meet a neighbour): growth by doubling
-  // would hold up to twice that while the pass runs.
-  std::vector<Found> found;
-  found.reserve(std::max(m.contacts.size() + m.contacts.size() / 16, 3 * pairs.size()) + 64);
-  for (const auto& [lo, hi] : pairs) {
-    corner_search(B, lo, hi, boxes[hi], tol, found);
-    corner_search(B, hi, lo, boxes[lo], tol, found);
-  }
-  // Merge with the existing contacts (both sorted by key), keeping history. First where each
-  // find's contact was, or, for a new one, its joint (chosen now: it may fail, and nothing is
-  // changed yet); then array by array, each old array freed as soon as its new one is built,
-  // so that a pass never holds two whole contact stores.
+  // Narrow phase, pair by pair in sorted order, run twice so that no list of finds is held
+  // (it was 16 bytes a contact on top of the store at the pass's peak): first to learn where
+  // each find's contact was, or, for a new one, whether joint properties apply (it may fail, and
+  // nothing is changed yet); then, once the arrays are gathered, to fill in the identity and
+  // geometry. The same blocks give the same finds in the same order both times.
   Contacts& old = m.contacts;
   constexpr uint32_t kNew = std::numeric_limits<uint32_t>::max();
-  std::vector<uint32_t> from(found.size(), kNew);
+  std::vector<Found> scratch;  // one pair's finds
+  const auto pair_finds = [&](uint32_t lo, uint32_t hi) {
+    scratch.clear();
+    corner_search(B, lo, hi, boxes[hi], tol, scratch);
+    corner_search(B, hi, lo, boxes[lo], tol, scratch);
+  };
   // The joint of a new contact, from the tag of the face met (for a rounded corner, the later
   // of its two edges); -1 when no joint properties apply.
   const auto joint_of = [&](const Found& f) {
@@ -210,25 +207,30 @@ void detect_contacts(Model& m) {
     }
     return std::pair{m.joint_for(f.owner, f.other, tag), tag};
   };
-  // First where each find's contact was, and for a new one whether joint properties apply (it
-  // may fail, and nothing is changed yet; the joint is looked up again when it is made).
+  // Where each find's contact was (room for about as many as last time, or on a first pass
+  // three a pair: two or three corners meet a neighbour).
+  std::vector<uint32_t> from;
+  from.reserve(std::max(old.size() + old.size() / 16, 3 * pairs.size()) + 64);
   size_t j = 0;
   auto old_key = [&](size_t i) {
     const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
     return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
   };
-  for (size_t k = 0; k < found.size(); ++k) {
-    const Found& f = found[k];
-    const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot());
-    while (j < old.size() && old_key(j) < key) ++j;
-    if (j < old.size() && old_key(j) == key) {
-      from[k] = static_cast<uint32_t>(j);
-      continue;
+  for (const auto& [lo, hi] : pairs) {
+    pair_finds(lo, hi);
+    for (const Found& f : scratch) {
+      const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot());
+      while (j < old.size() && old_key(j) < key) ++j;
+      if (j < old.size() && old_key(j) == key) {
+        from.push_back(static_cast<uint32_t>(j));
+        continue;
+      }
+      if (joint_of(f).first < 0)
+        throw ModelError("no joint properties apply to the contact between " +
+                         m.block_label(f.owner) + " and " + m.block_label(f.other) +
+                         ": use 'joint assign'");
+      from.push_back(kNew);
     }
-    if (joint_of(f).first < 0)
-      throw ModelError("no joint properties apply to the contact between " +
-                       m.block_label(f.owner) + " and " + m.block_label(f.other) +
-                       ": use 'joint assign'");
   }
   // Contacts dropped while dilation held them loaded (for a warning).
   {
@@ -238,7 +240,7 @@ void detect_contacts(Model& m) {
     for (size_t i = 0; i < old.size(); ++i)
       if (!kept[i]) m.note_lost(old.flags[i], old.fn[i], old.dilation[i]);
   }
-  const size_t count = found.size();
+  const size_t count = from.size();
   Contacts next;
   // Each array gathered from the old store (zeros for new contacts), the old one freed at once.
   const auto gather = [&](auto& to, auto& was) {
@@ -258,26 +260,34 @@ void detect_contacts(Model& m) {
         if (!was.empty()) gather(to, was);
       },
       next, old);
-  for (size_t k = 0; k < count; ++k) {
-    const Found& f = found[k];
-    const FeatureHit hit = found_hit(B, f);
-    if (from[k] == kNew) {
-      // A new contact: who it joins and the joint it is on; no history (zeros).
-      next.a[k] = f.owner, next.b[k] = f.other, next.corner[k] = f.corner, next.slot[k] = f.slot();
-      const auto [joint, tag] = joint_of(f);
-      next.joint[k] = static_cast<uint32_t>(joint), next.tag[k] = tag;
-      const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
-      // Joints shut when the model is assembled are bonded (cohesion and tension act); a
-      // contact open by more than round-off is a gap, not a joint.
-      if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && hit.gap <= m.bond_gap())
-        next.flags[k] |= kBonded;
+  size_t k = 0;
+  for (const auto& [lo, hi] : pairs) {
+    pair_finds(lo, hi);
+    for (size_t q = 0; q < scratch.size(); ++q, ++k) {
+      if (k >= count) throw std::logic_error("a detection pass found different contacts twice");
+      const Found& f = scratch[q];
+      const FeatureHit hit = found_hit(B, f);
+      if (from[k] == kNew) {
+        // A new contact: who it joins and the joint it is on; no history (zeros).
+        next.a[k] = f.owner, next.b[k] = f.other, next.corner[k] = f.corner;
+        next.slot[k] = f.slot();
+        const auto [joint, tag] = joint_of(f);
+        next.joint[k] = static_cast<uint32_t>(joint), next.tag[k] = tag;
+        const JointProperties& jp = m.joints[static_cast<size_t>(joint)];
+        // Joints shut when the model is assembled are bonded (cohesion and tension act); a
+        // contact open by more than round-off is a gap, not a joint.
+        if (m.cycle == 0 && (jp.cohesion > 0.0 || jp.tension > 0.0) && hit.gap <= m.bond_gap())
+          next.flags[k] |= kBonded;
+      }
+      next.kind[k] = hit.kind, next.feature[k] = hit.feature, next.gap[k] = hit.gap;
+      next.normal[k] = hit.normal, next.point[k] = hit.point, next.chord[k] = hit.chord;
+      // Both contacts of a corner in a notch keep their own face (its second follows it).
+      const bool notch = f.slot() == 1 || (q + 1 < scratch.size() && scratch[q + 1].slot() == 1);
+      next.flags[k] =
+          static_cast<uint8_t>(notch ? next.flags[k] | kNotch : next.flags[k] & ~kNotch);
     }
-    next.kind[k] = hit.kind, next.feature[k] = hit.feature, next.gap[k] = hit.gap;
-    next.normal[k] = hit.normal, next.point[k] = hit.point, next.chord[k] = hit.chord;
-    // Both contacts of a corner in a notch keep their own face.
-    const bool notch = f.slot() == 1 || (k + 1 < found.size() && found[k + 1].slot() == 1);
-    next.flags[k] = static_cast<uint8_t>(notch ? next.flags[k] | kNotch : next.flags[k] & ~kNotch);
   }
+  if (k != count) throw std::logic_error("a detection pass found different contacts twice");
   // Interface ranges.
   next.pair_begin.assign(1, 0);
   for (size_t i = 0; i < next.size(); ++i) {
