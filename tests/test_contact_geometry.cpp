@@ -4,8 +4,13 @@
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
 
 #include "support.hpp"
+#include "tessera/contact2d/detection.hpp"
+#include "tessera/core/step.hpp"
 
 using namespace tessera;
 using tessera::test::ScriptRun;
@@ -23,6 +28,27 @@ const char* kPieces =
     "block 0.6559285,1.8498973 1.3467708,0.2315475 4.0881480,1.2589881 3.2888609,2.9715497 "
     "3,3 2.4147290,2.9423558 1.8519497,2.7716386 1.3332893,2.4944088 0.8786797,2.1213203 "
     "material=rock\n";
+
+// Eight unit squares on a fixed slab, 1 m apart (blocks 2-9); the second (block 3) hangs 0.5 m
+// above the slab. Joint properties apply to contacts of groups slab and a only.
+std::string row(const std::string& assign = "joint assign j\n") {
+  std::string s =
+      "round 0.005\nmaterial define rock density=2500\n"
+      "joint define j kn=1e9 ks=1e9 friction=40\n"
+      "block -1,-1 16,-1 16,0 -1,0 group=slab material=rock\nfix group=slab\n";
+  for (int k = 0; k < 8; ++k) {
+    const double x = 2.0 * k, y = k == 1 ? 0.5 : 0.0;
+    s += "block " + std::to_string(x) + "," + std::to_string(y) + " " + std::to_string(x + 1) +
+         "," + std::to_string(y) + " " + std::to_string(x + 1) + "," + std::to_string(y + 1) + " " +
+         std::to_string(x) + "," + std::to_string(y + 1) + " group=" + (k == 1 ? "b" : "a") +
+         " material=rock\n";
+  }
+  return s + assign;
+}
+using ContactKey = std::tuple<uint32_t, uint32_t, uint32_t, uint8_t>;
+ContactKey key_of(const Contacts& C, size_t i) {
+  return {C.a[i], C.corner[i], C.b[i], C.slot[i]};
+}
 }  // namespace
 
 class TestContactGeometry : public QObject {
@@ -43,6 +69,84 @@ class TestContactGeometry : public QObject {
     // (before: corner 5 of block 1 at -0.104 m, 1.8e9 N).
     QVERIFY(deepest > -1e-9);
     QVERIFY(largest < 1.0);
+  }
+
+  // A detection pass carries each contact's history to the same contact (the same corner of the
+  // same block against the same block) wherever it now stands in the store, as contacts before
+  // it come and go; new contacts start without history; chord and length are there again.
+  void detectionCarriesHistoryByIdentity() {
+    ScriptRun r;
+    r.run(row() + "step 1\n");
+    Model& m = r.model();
+    Contacts& C = m.contacts;
+    std::map<ContactKey, size_t> before;
+    for (size_t i = 0; i < C.size(); ++i) {
+      C.fn[i] = 1.0 + static_cast<double>(i), C.shear_disp[i] = 1e-3 * static_cast<double>(i);
+      C.dilation[i] = 1e-6 * static_cast<double>(i), C.flags[i] |= kTouching;
+      before[key_of(C, i)] = i;
+    }
+    QCOMPARE(C.size(), size_t{14});  // two corners of each square on the slab
+    // Block 3 comes down onto the slab and blocks 6 and 7 lift off: the contacts of blocks 4 and
+    // 5 move up the store by two, and those of blocks 8 and 9 down by two, each onto a place
+    // another one leaves.
+    m.blocks.y[2] -= 0.5, m.blocks.y[5] += 0.5, m.blocks.y[6] += 0.5;
+    detect_contacts(m);
+    size_t moved_up = 0, moved_down = 0, fresh = 0;
+    for (size_t i = 0; i < C.size(); ++i) {
+      const auto was = before.find(key_of(C, i));
+      if (was == before.end()) {
+        ++fresh;
+        QCOMPARE(C.fn[i], 0.0);
+        QCOMPARE(C.shear_disp[i], 0.0);
+        QVERIFY(!(C.flags[i] & kTouching));
+        continue;
+      }
+      const size_t o = was->second;
+      QCOMPARE(C.fn[i], 1.0 + static_cast<double>(o));
+      QCOMPARE(C.shear_disp[i], 1e-3 * static_cast<double>(o));
+      QCOMPARE(C.dilation[i], 1e-6 * static_cast<double>(o));
+      QVERIFY(C.flags[i] & kTouching);
+      moved_up += i > o, moved_down += i < o;
+    }
+    QCOMPARE(C.size(), size_t{12});
+    // Every contact of a block that stayed is still there, once.
+    std::set<ContactKey> after;
+    for (size_t i = 0; i < C.size(); ++i) after.insert(key_of(C, i));
+    QCOMPARE(after.size(), C.size());
+    for (const auto& [key, i] : before)
+      if (std::get<0>(key) != 5 && std::get<0>(key) != 6) QVERIFY(after.count(key) == 1);
+    QCOMPARE(fresh, size_t{2});
+    QCOMPARE(moved_up, size_t{4});
+    QCOMPARE(moved_down, size_t{4});
+    QCOMPARE(C.chord.size(), C.size());
+    QCOMPARE(C.length.size(), C.size());
+    QCOMPARE(m.block_contact_begin.back(), static_cast<uint32_t>(2 * C.size()));
+  }
+
+  // Where joint properties are assigned by group only, a pass that meets a contact none apply to
+  // stops with a message naming the blocks and leaves the contacts as they were.
+  void detectionFailsWithoutChangingTheContacts() {
+    ScriptRun r;
+    r.run(row("joint assign j groups=slab,a\n") + "step 1\n");
+    Model& m = r.model();
+    const Contacts C0 = m.contacts;
+    QCOMPARE(C0.size(), size_t{14});
+    m.blocks.y[2] -= 0.5;  // block 3, group b, onto the slab
+    try {
+      detect_contacts(m);
+      QFAIL("a contact without joint properties was made");
+    } catch (const ModelError& e) {
+      QVERIFY(std::string(e.what()).find("block 3 (group b)") != std::string::npos);
+    }
+    const Contacts& C = m.contacts;
+    QCOMPARE(C.size(), C0.size());
+    QCOMPARE(C.chord.size(), C0.size());
+    QCOMPARE(C.length.size(), C0.size());
+    for (size_t i = 0; i < C.size(); ++i) {
+      QVERIFY(key_of(C, i) == key_of(C0, i));
+      QCOMPARE(C.length[i], C0.length[i]);
+      QCOMPARE(C.fn[i], C0.fn[i]);
+    }
   }
 };
 

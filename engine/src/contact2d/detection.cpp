@@ -167,20 +167,31 @@ void detect_contacts(Model& m) {
   Blocks& B = m.blocks;
   const double tol = m.tolerance();
   const size_t n = B.size();
+  Contacts& old = m.contacts;
+  // Chord and length are recomputed before they are read (the geometry stage, then the
+  // interfaces): the pass drops them, so that its own arrays fit in their room, as soon as it
+  // cannot fail. It fails only where no joint properties apply to a new contact, which cannot
+  // happen when some assignment covers every contact.
+  const auto release_recomputed = [&] {
+    std::vector<double>().swap(old.chord), std::vector<double>().swap(old.length);
+  };
+  const bool covered = std::any_of(m.joint_table.begin(), m.joint_table.end(), [](const auto& j) {
+    return j.tag < 0 && j.group_a < 0 && j.group_b < 0;
+  });
+  if (covered) release_recomputed();
   for (size_t b = 0; b < n; ++b) B.update_world(b);
   update_deformable_world(m);
-  const std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
+  std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
   // Fixed blocks do not meet each other; a deformable block's nodes move although its rigid
   // motion is held.
   std::vector<uint8_t> fixed(n);
   for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
-  const auto pairs = broad_phase(boxes, fixed);
-  // Narrow phase, pair by pair in sorted order, run twice so that no list of finds is held
-  // (it was 16 bytes a contact on top of the store at the pass's peak): first to learn where
-  // each find's contact was, or, for a new one, whether joint properties apply (it may fail, and
-  // nothing is changed yet); then, once the arrays are gathered, to fill in the identity and
-  // geometry. The same blocks give the same finds in the same order both times.
-  Contacts& old = m.contacts;
+  auto pairs = broad_phase(boxes, fixed);
+  // Narrow phase, pair by pair in sorted order, run again for each use rather than holding a
+  // list of finds (16 bytes a contact at the pass's peak): to check that joint properties apply
+  // to each new contact (where that can fail), to learn where each find's contact was, and,
+  // once the arrays are gathered, to fill in identity and geometry. The same blocks give the
+  // same finds in the same order every time.
   constexpr uint32_t kNew = std::numeric_limits<uint32_t>::max();
   std::vector<Found> scratch;  // one pair's finds
   const auto pair_finds = [&](uint32_t lo, uint32_t hi) {
@@ -207,31 +218,42 @@ void detect_contacts(Model& m) {
     }
     return std::pair{m.joint_for(f.owner, f.other, tag), tag};
   };
-  // Where each find's contact was (room for about as many as last time, or on a first pass
-  // three a pair: two or three corners meet a neighbour).
+  // Where each find's contact was: the finds merged with the old contacts (both sorted by key).
+  // For a new contact, whether joint properties apply is checked when `check` is set (it may
+  // fail, and nothing is changed yet; the joint is looked up again when the contact is made).
   std::vector<uint32_t> from;
-  from.reserve(std::max(old.size() + old.size() / 16, 3 * pairs.size()) + 64);
-  size_t j = 0;
-  auto old_key = [&](size_t i) {
-    const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
-    return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
-  };
-  for (const auto& [lo, hi] : pairs) {
-    pair_finds(lo, hi);
-    for (const Found& f : scratch) {
-      const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot());
-      while (j < old.size() && old_key(j) < key) ++j;
-      if (j < old.size() && old_key(j) == key) {
-        from.push_back(static_cast<uint32_t>(j));
-        continue;
+  const auto match = [&](bool check) {
+    size_t j = 0;
+    auto old_key = [&](size_t i) {
+      const uint32_t lo = std::min(old.a[i], old.b[i]), hi = std::max(old.a[i], old.b[i]);
+      return std::make_tuple(lo, hi, old.a[i], old.corner[i], old.slot[i]);
+    };
+    for (const auto& [lo, hi] : pairs) {
+      pair_finds(lo, hi);
+      for (const Found& f : scratch) {
+        const auto key = std::make_tuple(f.lo(), f.hi(), f.owner, f.corner, f.slot());
+        while (j < old.size() && old_key(j) < key) ++j;
+        if (j < old.size() && old_key(j) == key) {
+          if (!check) from.push_back(static_cast<uint32_t>(j));
+          continue;
+        }
+        if (check && joint_of(f).first < 0)
+          throw ModelError("no joint properties apply to the contact between " +
+                           m.block_label(f.owner) + " and " + m.block_label(f.other) +
+                           ": use 'joint assign'");
+        if (!check) from.push_back(kNew);
       }
-      if (joint_of(f).first < 0)
-        throw ModelError("no joint properties apply to the contact between " +
-                         m.block_label(f.owner) + " and " + m.block_label(f.other) +
-                         ": use 'joint assign'");
-      from.push_back(kNew);
     }
+  };
+  // The check needs a pass of its own unless some assignment covers every contact; chord and
+  // length go after it. Then `from` is filled (room for about as many as last time, or on a
+  // first pass three a pair: two or three corners meet a neighbour).
+  if (!covered) {
+    match(true);
+    release_recomputed();
   }
+  from.reserve(std::max(old.size() + old.size() / 16, 3 * pairs.size()) + 64);
+  match(false);
   // Contacts dropped while dilation held them loaded (for a warning).
   {
     std::vector<uint8_t> kept(old.size(), 0);
@@ -242,18 +264,37 @@ void detect_contacts(Model& m) {
   }
   const size_t count = from.size();
   Contacts next;
-  // Each array gathered from the old store (zeros for new contacts), the old one freed at once.
+  // Each array gathered from the old store, zeros for new contacts. In place when the old array
+  // has room (kept contacts keep their order, so those moving down can be moved first, lowest
+  // first, then those moving up, highest first, and no value is overwritten before it is read):
+  // a pass then never holds two copies of an array. Otherwise into a new array (on a later pass,
+  // with a little room to grow), the old one freed at once.
   const auto gather = [&](auto& to, auto& was) {
     using T = typename std::decay_t<decltype(to)>::value_type;
+    T zero;
     if constexpr (std::is_arithmetic_v<T>)
-      to.assign(count, T(0));
+      zero = T(0);
     else
-      to.assign(count, T::Zero());
+      zero = T::Zero();
+    if (count > was.capacity()) {
+      to.reserve(was.empty() ? count : count + count / 64);
+      to.assign(count, zero);
+      for (size_t k = 0; k < count; ++k)
+        if (from[k] != kNew) to[k] = was[from[k]];
+      std::decay_t<decltype(was)>().swap(was);
+      return;
+    }
+    if (count > was.size()) was.resize(count);
     for (size_t k = 0; k < count; ++k)
-      if (from[k] != kNew) to[k] = was[from[k]];
-    std::decay_t<decltype(was)>().swap(was);
+      if (from[k] != kNew && from[k] > k) was[k] = was[from[k]];
+    for (size_t k = count; k-- > 0;)
+      if (from[k] != kNew && from[k] < k) was[k] = was[from[k]];
+    for (size_t k = 0; k < count; ++k)
+      if (from[k] == kNew) was[k] = zero;
+    was.resize(count);
+    to.swap(was);
   };
-  Contacts::each_array(gather, next, old);
+  Contacts::each_carried(gather, next, old);
   // Optional arrays stay absent unless the old store held them.
   Contacts::each_optional(
       [&](auto& to, auto& was) {
@@ -280,7 +321,7 @@ void detect_contacts(Model& m) {
           next.flags[k] |= kBonded;
       }
       next.kind[k] = hit.kind, next.feature[k] = hit.feature, next.gap[k] = hit.gap;
-      next.normal[k] = hit.normal, next.point[k] = hit.point, next.chord[k] = hit.chord;
+      next.normal[k] = hit.normal, next.point[k] = hit.point;
       // Both contacts of a corner in a notch keep their own face (its second follows it).
       const bool notch = f.slot() == 1 || (q + 1 < scratch.size() && scratch[q + 1].slot() == 1);
       next.flags[k] =
@@ -288,6 +329,10 @@ void detect_contacts(Model& m) {
     }
   }
   if (k != count) throw std::logic_error("a detection pass found different contacts twice");
+  // The pass's arrays go before chord and length come back.
+  std::vector<uint32_t>().swap(from), std::vector<Found>().swap(scratch);
+  decltype(pairs)().swap(pairs), std::vector<Box>().swap(boxes);
+  next.chord.assign(count, 0.0), next.length.assign(count, 0.0);
   // Interface ranges.
   next.pair_begin.assign(1, 0);
   for (size_t i = 0; i < next.size(); ++i) {

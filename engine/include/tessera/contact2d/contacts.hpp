@@ -84,10 +84,17 @@ struct Contacts {
   // one or more stores at once: f(x.a, y.a), f(x.b, y.b), ...
   template <class F, class... Cs>
   static void each_array(F&& f, Cs&... c) {
+    each_carried(f, c...);
+    f(c.chord...), f(c.length...);
+  }
+  // The same less `chord` and `length`, which every cycle computes afresh before it reads them
+  // (the geometry stage, then the interfaces): a detection pass drops those two while it runs
+  // and gives them back as zeros, and carries these.
+  template <class F, class... Cs>
+  static void each_carried(F&& f, Cs&... c) {
     f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
     f(c.flags...), f(c.joint...), f(c.tag...), f(c.normal...), f(c.point...), f(c.gap...);
-    f(c.chord...), f(c.length...), f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...);
-    f(c.shear_disp...);
+    f(c.fn...), f(c.fs...), f(c.un_prev...), f(c.dilation...), f(c.shear_disp...);
   }
   // The same for the arrays held only when used.
   template <class F, class... Cs>
