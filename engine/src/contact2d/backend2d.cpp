@@ -35,6 +35,9 @@ void resultants2d(Model& m) {
   Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   const Vec2 g = m.settings.gravity;
+  // Each contact's normal and shear force, dashpot included, formed once per block side as
+  // Contacts::force does (the dashpot arrays tested once, not at every contact).
+  const bool damped = !C.damp_fn.empty();
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
       double fx = B.mass[b] * g.x() + B.load_fx[b], fy = B.mass[b] * g.y() + B.load_fy[b];
@@ -44,10 +47,13 @@ void resultants2d(Model& m) {
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t i = m.block_contacts[k] >> 1;
         const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
-        const Vec2 f = sign * C.force(i);
+        const double fn = damped ? C.fn[i] + C.damp_fn[i] : C.fn[i];
+        const double fs = damped ? C.fs[i] + C.damp_fs[i] : C.fs[i];
+        const Vec2 nrm = C.normal[i];
+        const Vec2 f = sign * Vec2(fn * nrm + fs * perp(nrm));
         fx += f.x(), fy += f.y();
         mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
-        applied += C.force_mag(i);
+        applied += std::abs(fn) + std::abs(fs);
       }
       B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
     }
