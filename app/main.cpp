@@ -7,13 +7,11 @@
 #include <cstdlib>
 
 #include "batch.hpp"
-#include "tessera/core/memory.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/ui/main_window.hpp"
 #include "tessera/ui/vtk_view.hpp"
 
 int main(int argc, char** argv) {
-  tessera::tune_allocator();
   CLI::App app{"Tessera: distinct element models of blocky rock and masonry"};
   std::string script, batch, out_dir;
   int threads = 1;

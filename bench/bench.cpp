@@ -8,7 +8,6 @@
 #include "kernel.hpp"
 #include "tessera/contact2d/detection.hpp"
 #include "tessera/contact3d/detection3.hpp"
-#include "tessera/core/memory.hpp"
 #include "tessera/core/parallel.hpp"
 #include "tessera/core/step.hpp"
 #include "tessera/generation/generators.hpp"
@@ -171,7 +170,6 @@ uint64_t state_hash(const Model& m) {
 }
 
 int main(int argc, char** argv) {
-  tune_allocator();
   CLI::App app{"Tessera benchmarks"};
   std::string scene = "wall";
   int cols = 100, rows = 50, threads = 1, order = 1;

@@ -2,6 +2,10 @@
 // each candidate pair, and a merge that keeps the history of contacts that persist.
 #include "tessera/contact2d/detection.hpp"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -178,7 +182,16 @@ void detect_contacts(Model& m) {
   const bool covered = std::any_of(m.joint_table.begin(), m.joint_table.end(), [](const auto& j) {
     return j.tag < 0 && j.group_a < 0 && j.group_b < 0;
   });
+  // Freed memory goes back to the system as the pass turns (glibc keeps freed pages of its heap
+  // resident, and the arrays a pass frees and makes, megabytes each, would leave holes that add
+  // to the resident set pass after pass).
+  const auto give_back = [] {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+  };
   if (covered) release_recomputed();
+  give_back();
   for (size_t b = 0; b < n; ++b) B.update_world(b);
   update_deformable_world(m);
   std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
@@ -271,11 +284,12 @@ void detect_contacts(Model& m) {
   // with a little room to grow), the old one freed at once.
   const auto gather = [&](auto& to, auto& was) {
     using T = typename std::decay_t<decltype(to)>::value_type;
-    T zero;
-    if constexpr (std::is_arithmetic_v<T>)
-      zero = T(0);
-    else
-      zero = T::Zero();
+    const T zero = [] {
+      if constexpr (std::is_arithmetic_v<T>)
+        return T(0);
+      else
+        return T(T::Zero());
+    }();
     if (count > was.capacity()) {
       to.reserve(was.empty() ? count : count + count / 64);
       to.assign(count, zero);
@@ -332,6 +346,7 @@ void detect_contacts(Model& m) {
   // The pass's arrays go before chord and length come back.
   std::vector<uint32_t>().swap(from), std::vector<Found>().swap(scratch);
   decltype(pairs)().swap(pairs), std::vector<Box>().swap(boxes);
+  give_back();
   next.chord.assign(count, 0.0), next.length.assign(count, 0.0);
   // Interface ranges.
   next.pair_begin.assign(1, 0);
@@ -347,6 +362,7 @@ void detect_contacts(Model& m) {
   m.det_node = m.continuum.pos;
   m.detection_due = false;
   ++m.detection_passes;
+  give_back();
 }
 
 std::string find_overlap2d(const Model& m) {
