@@ -35,8 +35,7 @@ void resultants2d(Model& m) {
   Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   const Vec2 g = m.settings.gravity;
-  // Each contact's normal and shear force, dashpot included, formed once per block side as
-  // Contacts::force does (the dashpot arrays tested once, not at every contact).
+  // Each contact's force formed once per block side, the dashpot arrays tested once.
   const bool damped = !C.damp_fn.empty();
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
@@ -47,10 +46,8 @@ void resultants2d(Model& m) {
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t i = m.block_contacts[k] >> 1;
         const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
-        const double fn = damped ? C.fn[i] + C.damp_fn[i] : C.fn[i];
-        const double fs = damped ? C.fs[i] + C.damp_fs[i] : C.fs[i];
-        const Vec2 nrm = C.normal[i];
-        const Vec2 f = sign * Vec2(fn * nrm + fs * perp(nrm));
+        const double fn = C.total_fn(i, damped), fs = C.total_fs(i, damped);
+        const Vec2 f = sign * Contacts::force_of(fn, fs, C.normal[i]);
         fx += f.x(), fy += f.y();
         mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
         applied += std::abs(fn) + std::abs(fs);
