@@ -106,13 +106,14 @@ void update_corner_contacts(Model& m) {
 // half of that extent, since a spring bed under a wedge carries kn o s / 2. Without it the
 // length is the arc's chord, which vanishes as the overlap passes 2d, and a toppling block on
 // soft joints sinks through its base on its toe. Just after the neighbour lifts, the wedge runs
-// the whole face and the length is the share the two had: (w - 2d) / 2.
-double wedge_length(const Blocks& B, const Contacts& C, uint32_t i) {
-  const uint32_t a = C.a[i], v = C.corner[i];
+// the whole face and the length is the share the two had: (w - 2d) / 2. Corner v of block a,
+// with the contact's normal, point and gap.
+double wedge_length(const Blocks& B, uint32_t a, uint32_t v, const Vec2& nrm, const Vec2& point,
+                    double gap) {
   const uint32_t vp = B.prev_vertex(a, v);
-  const Vec2 nrm = C.normal[i], t = perp(nrm);
+  const Vec2 t = perp(nrm);
   // Depth of the sharp corner below the other block's surface (normals point to the owner).
-  const Vec2 surface = C.point[i] - 0.5 * C.gap[i] * nrm;
+  const Vec2 surface = point - 0.5 * gap * nrm;
   const double depth = (surface - B.world_vertex[v]).dot(nrm);
   if (!(depth > 0.0)) return 0.0;
   const uint32_t v0 = B.vert_begin[a], n = B.vertex_count(a);
@@ -134,13 +135,31 @@ double wedge_length(const Blocks& B, const Contacts& C, uint32_t i) {
 // Contacts closer than `merge` stand at one point (two corners meeting face to face): the
 // point's share is split evenly, so that round-off in their order cannot move the length from
 // one to the other from cycle to cycle. A line of one point (a corner whose neighbour lifted
-// off) has no neighbours to share with: its contacts take their corners' wedge lengths.
-void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge, const Blocks& B,
-                  Contacts& C) {
-  // Insertion sort: a line has a handful of contacts, mostly in order already.
-  for (size_t j = 1; j < along.size(); ++j)
-    for (size_t q = j; q > 0 && along[q] < along[q - 1]; --q) std::swap(along[q], along[q - 1]);
+// off) has no neighbours to share with: its contacts take their corners' wedge lengths
+// (`wedge(i)`).
+template <class Wedge>
+inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
+                         const double* chord, double* length, const Wedge& wedge) {
   const size_t k = along.size();
+  // Order by position, then index (std::pair's order, written out: its three-way comparison
+  // costs twice the instructions).
+  const auto before = [](const std::pair<double, uint32_t>& x,
+                         const std::pair<double, uint32_t>& y) {
+    return x.first < y.first || (x.first == y.first && x.second < y.second);
+  };
+  // Two contacts apart (the usual line): each takes half the distance between them, as below.
+  if (k == 2) {
+    if (before(along[1], along[0])) std::swap(along[0], along[1]);
+    if (along[1].first - along[0].first > merge) {
+      const double len = 0.5 * (along[1].first - along[0].first);
+      for (const auto& [x, i] : along) length[i] = std::max(len, chord[i]);
+      return;
+    }
+  }
+  // Insertion sort: a line has a handful of contacts, mostly in order already.
+  for (size_t j = 1; j < k; ++j)
+    for (size_t q = j; q > 0 && before(along[q], along[q - 1]); --q)
+      std::swap(along[q], along[q - 1]);
   // Centre of the group of contacts starting at g0; g1 receives the index past the group.
   auto group = [&](size_t g0, size_t& g1) {
     g1 = g0 + 1;
@@ -148,18 +167,12 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
     while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) sum += along[g1++].first;
     return sum / static_cast<double>(g1 - g0);
   };
-  // Two contacts apart (the usual line): each takes half the distance between them, as below.
-  if (k == 2 && along[1].first - along[0].first > merge) {
-    const double len = 0.5 * (along[1].first - along[0].first);
-    for (const auto& [x, i] : along) C.length[i] = std::max(len, C.chord[i]);
-    return;
-  }
   size_t g0 = 0, g1 = 0;
   double prev = 0.0, centre = k ? group(0, g1) : 0.0;
   if (k && g1 == k) {
     for (size_t j = 0; j < k; ++j) {
       const uint32_t i = along[j].second;
-      C.length[i] = std::max(wedge_length(B, C, i) / static_cast<double>(k), C.chord[i]);
+      length[i] = std::max(wedge(i) / static_cast<double>(k), chord[i]);
     }
     return;
   }
@@ -169,7 +182,7 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
     const double len = 0.5 * ((g0 > 0 ? centre - prev : 0.0) + (next - centre));
     for (size_t j = g0; j < g1; ++j) {
       const uint32_t i = along[j].second;
-      C.length[i] = std::max(len / static_cast<double>(g1 - g0), C.chord[i]);
+      length[i] = std::max(len / static_cast<double>(g1 - g0), chord[i]);
     }
     prev = centre, centre = next, g0 = g1, g1 = g2;
   }
@@ -189,24 +202,149 @@ void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
                 what.str());
 }
 
-// Per interface: the length of each contact, then the joint law for each contact, giving its
-// force. Contacts facing the same way form one joint line (a concave block can touch another
-// along two faces); each line shares its length on its own.
+// What the contact stage reads beside the model, once per stage.
+struct StageInputs {
+  double dt, merge, roundoff;
+  bool plastic, damped;
+};
+
+// The interfaces of pairs [p0, p1): each contact's share of joint length, then the joint law.
+// The geometry comes in read-only, and every array the stage writes as its own restrict pointer
+// (plastic, damp_fn and damp_fs null when not held): the compiler may then keep the addresses
+// of the arrays it reads in registers, which a store through a flag (a byte, which may alias
+// anything) would otherwise make it reload.
+void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, FirstFlagged& too_deep,
+                const uint8_t* kind, const double* gap, const Vec2* normal, const Vec2* point,
+                const double* chord, uint8_t* __restrict flags, double* __restrict length,
+                double* __restrict fn, double* __restrict fs, double* __restrict un_prev,
+                double* __restrict dilation, double* __restrict shear_disp,
+                double* __restrict plastic, double* __restrict damp_fn,
+                double* __restrict damp_fs) {
+  const Blocks& B = m.blocks;
+  const Contacts& C = m.contacts;
+  std::vector<std::pair<double, uint32_t>> along;
+  std::vector<uint8_t> placed;
+  const auto wedge = [&](uint32_t i) {
+    return wedge_length(B, C.a[i], C.corner[i], normal[i], point[i], gap[i]);
+  };
+  // Normals point towards the owner: compare them turned to point the same way.
+  const auto facing = [&](uint32_t q) { return C.a[q] < C.b[q] ? normal[q] : Vec2(-normal[q]); };
+  // Contacts of a pair split into joint lines by the way they face (a concave block can touch
+  // another along two faces); each line shares its length on its own.
+  const auto general_lines = [&](uint32_t c0, uint32_t c1) {
+    placed.assign(c1 - c0, 0);
+    for (uint32_t i = c0; i < c1; ++i) length[i] = 0.0;
+    for (uint32_t i = c0; i < c1; ++i) {
+      if (kind[i] == kLost || placed[i - c0]) continue;
+      const Vec2 n0 = facing(i), t = perp(n0);
+      along.clear();
+      for (uint32_t q = i; q < c1; ++q)
+        if (kind[q] != kLost && !placed[q - c0] && facing(q).dot(n0) > 0.8) {
+          placed[q - c0] = 1;
+          along.emplace_back(point[q].dot(t), q);
+        }
+      share_length(along, in.merge, chord, length, wedge);
+    }
+  };
+  for (size_t p = p0; p < p1; ++p) {
+    const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
+    // The pair's blocks (either may own a contact), and the deepest overlap believed.
+    const uint32_t pa = C.a[c0], pb = C.b[c0];
+    const double depth_limit = kOverlapLimit * max_contact_depth(B, pa, pb);
+    // Fast path (convex blocks, nearly every pair): all contacts face one way, so they form one
+    // joint line, the same list the general path below would build.
+    bool one_line = true;
+    Vec2 n_first = Vec2::Zero(), t_first = Vec2::Zero();
+    along.clear();
+    for (uint32_t i = c0; i < c1 && one_line; ++i) {
+      length[i] = 0.0;
+      if (kind[i] == kLost) continue;
+      const Vec2 f = facing(i);
+      if (along.empty())
+        n_first = f, t_first = perp(f);
+      else if (!(f.dot(n_first) > 0.8))
+        one_line = false;
+      along.emplace_back(point[i].dot(t_first), i);
+    }
+    if (one_line) {
+      if (!along.empty()) share_length(along, in.merge, chord, length, wedge);
+    } else {
+      general_lines(c0, c1);
+    }
+    // Whether a block is deformable.
+    const bool soft = B.deformable[pa] || B.deformable[pb];
+    // A node of a deformable block stands for its own stretch of outline at most: a light node
+    // alone against a long edge must not take the edge's stiffness. (A pair's contacts can be
+    // owned by either block: checked per contact.)
+    if (soft)
+      for (uint32_t i = c0; i < c1; ++i) {
+        const uint32_t blk = C.a[i];
+        if (!B.deformable[blk]) continue;
+        const double own = B.vertex_share(blk, C.corner[i]);
+        length[i] = std::min(length[i], std::max(own, chord[i]));
+      }
+    double pair_length = -1.0;  // summed once, for contact damping
+    for (uint32_t i = c0; i < c1; ++i) {
+      if (kind[i] == kLost) {
+        if (flags[i] & kBonded) flags[i] = static_cast<uint8_t>((flags[i] & ~kBonded) | kBroken);
+        flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
+        fn[i] = 0.0, fs[i] = 0.0, un_prev[i] = 0.0;
+        if (in.damped) damp_fn[i] = 0.0, damp_fs[i] = 0.0;
+        continue;
+      }
+      const double overlap = without_roundoff(-gap[i] + C.closure_at(i), in.roundoff);
+      if (-gap[i] > depth_limit) too_deep.flag(i);
+      const double un = overlap + dilation[i];
+      if (stays_open(un, fn[i], flags[i])) {
+        fs[i] = 0.0, un_prev[i] = un;
+        if (in.damped) damp_fn[i] = 0.0, damp_fs[i] = 0.0;
+        flags[i] &= static_cast<uint8_t>(~kPreload);
+        continue;
+      }
+      // An in-situ shear stress becomes a force once the contact has its length.
+      if (flags[i] & kPreload) {
+        fs[i] *= length[i];
+        flags[i] &= static_cast<uint8_t>(~kPreload);
+      }
+      // Shear displacement increment of a relative to b over the last step. (A deformable
+      // side's velocity reads this contact's point and feature, set above, through the model.)
+      const Vec2 n = normal[i], tn = perp(n);
+      const Vec2 dv =
+          soft ? Vec2(contact_side_velocity(m, i, false) - contact_side_velocity(m, i, true))
+               : Vec2(point_velocity(B, C.a[i], point[i]) - point_velocity(B, C.b[i], point[i]));
+      const double dus = dv.dot(tn) * in.dt;
+      JointState s{fn[i],       fs[i],         un_prev[i],
+                   dilation[i], shear_disp[i], flags[i],
+                   0.0,         0.0,           in.plastic ? plastic[i] : 0.0};
+      const JointProperties& jp = m.joints[C.joint[i]];
+      joint_update<true>(jp, length[i], overlap, dus, 0.0, s);
+      fn[i] = s.fn, fs[i] = s.fs, un_prev[i] = s.un_prev, dilation[i] = s.dilation;
+      shear_disp[i] = s.shear_disp, flags[i] = s.flags;
+      if (in.plastic) plastic[i] = s.plastic;
+      if (!in.damped) continue;
+      damp_fn[i] = 0.0, damp_fs[i] = 0.0;
+      if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
+        if (pair_length < 0.0) {
+          pair_length = 0.0;
+          for (uint32_t q = c0; q < c1; ++q) pair_length += length[q];
+        }
+        const Dashpot d =
+            contact_dashpot(jp, length[i], length[i] / pair_length, pair_mass(B, C.a[i], C.b[i]),
+                            -dv.dot(n), dv.dot(tn), 0.0, s.flags & kSlipping);
+        damp_fn[i] = d.fn, damp_fs[i] = d.fs;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void update_interfaces(Model& m) {
-  const Blocks& B = m.blocks;
   Contacts& C = m.contacts;
-  const double dt = m.dt;
-  const double merge = 0.25 * m.settings.rounding;
-  const double roundoff = m.roundoff_gap();
-  // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
-  FirstFlagged too_deep;
   // Laws other than Coulomb's (cy, barton-bandis, plug-ins) keep a plastic shear history.
   if (std::any_of(m.joints.begin(), m.joints.end(),
                   [](const JointProperties& j) { return j.inline_coulomb < 0; }))
     C.hold(C.plastic);
-  const bool plastic = !C.plastic.empty();
   // Damped joints keep their dashpot's forces beside the springs' (released when none is).
   const bool damped = std::any_of(m.joints.begin(), m.joints.end(), [](const JointProperties& j) {
     return j.normal_damping > 0.0 || j.shear_damping > 0.0;
@@ -216,121 +354,18 @@ void update_interfaces(Model& m) {
   } else {
     std::vector<double>().swap(C.damp_fn), std::vector<double>().swap(C.damp_fs);
   }
+  const StageInputs in{m.dt, 0.25 * m.settings.rounding, m.roundoff_gap(), !C.plastic.empty(),
+                       damped};
+  // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
+  FirstFlagged too_deep;
+  const auto held = [](std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };
   parallel_for(
       C.pair_count(),
       [&](size_t p0, size_t p1) {
-        std::vector<std::pair<double, uint32_t>> along;
-        std::vector<uint8_t> placed;
-        // Normals point towards the owner: compare them turned to point the same way.
-        const auto facing = [&](uint32_t q) {
-          return C.a[q] < C.b[q] ? C.normal[q] : Vec2(-C.normal[q]);
-        };
-        // Contacts of a pair split into joint lines by the way they face (a concave block can
-        // touch another along two faces); each line shares its length on its own.
-        const auto general_lines = [&](uint32_t c0, uint32_t c1) {
-          placed.assign(c1 - c0, 0);
-          for (uint32_t i = c0; i < c1; ++i) C.length[i] = 0.0;
-          for (uint32_t i = c0; i < c1; ++i) {
-            if (C.kind[i] == kLost || placed[i - c0]) continue;
-            const Vec2 n0 = facing(i), t = perp(n0);
-            along.clear();
-            for (uint32_t q = i; q < c1; ++q)
-              if (C.kind[q] != kLost && !placed[q - c0] && facing(q).dot(n0) > 0.8) {
-                placed[q - c0] = 1;
-                along.emplace_back(C.point[q].dot(t), q);
-              }
-            share_length(along, merge, B, C);
-          }
-        };
-        for (size_t p = p0; p < p1; ++p) {
-          const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
-          // Fast path (convex blocks, nearly every pair): all contacts face one way, so they
-          // form one joint line, the same list the general path below would build.
-          bool one_line = true;
-          Vec2 n_first = Vec2::Zero(), t_first = Vec2::Zero();
-          along.clear();
-          for (uint32_t i = c0; i < c1 && one_line; ++i) {
-            C.length[i] = 0.0;
-            if (C.kind[i] == kLost) continue;
-            const Vec2 f = facing(i);
-            if (along.empty())
-              n_first = f, t_first = perp(f);
-            else if (!(f.dot(n_first) > 0.8))
-              one_line = false;
-            along.emplace_back(C.point[i].dot(t_first), i);
-          }
-          if (one_line) {
-            if (!along.empty()) share_length(along, merge, B, C);
-          } else {
-            general_lines(c0, c1);
-          }
-          // The pair's blocks (either may own a contact), whether one is deformable, and the
-          // deepest overlap believed.
-          const uint32_t pa = C.a[c0], pb = C.b[c0];
-          const bool soft = B.deformable[pa] || B.deformable[pb];
-          const double depth_limit = kOverlapLimit * max_contact_depth(B, pa, pb);
-          // A node of a deformable block stands for its own stretch of outline at most: a
-          // light node alone against a long edge must not take the edge's stiffness.
-          // (A pair's contacts can be owned by either block: checked per contact.)
-          if (soft)
-            for (uint32_t i = c0; i < c1; ++i) {
-              const uint32_t blk = C.a[i];
-              if (!B.deformable[blk]) continue;
-              const double own = B.vertex_share(blk, C.corner[i]);
-              C.length[i] = std::min(C.length[i], std::max(own, C.chord[i]));
-            }
-          double pair_length = -1.0;  // summed once, for contact damping
-          for (uint32_t i = c0; i < c1; ++i) {
-            if (C.kind[i] == kLost) {
-              if (C.flags[i] & kBonded)
-                C.flags[i] = static_cast<uint8_t>((C.flags[i] & ~kBonded) | kBroken);
-              C.flags[i] &= static_cast<uint8_t>(~(kTouching | kSlipping));
-              C.fn[i] = 0.0, C.fs[i] = 0.0, C.un_prev[i] = 0.0;
-              if (damped) C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
-              continue;
-            }
-            const double overlap = without_roundoff(-C.gap[i] + C.closure_at(i), roundoff);
-            if (-C.gap[i] > depth_limit) too_deep.flag(i);
-            const double un = overlap + C.dilation[i];
-            if (stays_open(un, C.fn[i], C.flags[i])) {
-              C.fs[i] = 0.0, C.un_prev[i] = un;
-              if (damped) C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
-              C.flags[i] &= static_cast<uint8_t>(~kPreload);
-              continue;
-            }
-            // An in-situ shear stress becomes a force once the contact has its length.
-            if (C.flags[i] & kPreload) {
-              C.fs[i] *= C.length[i];
-              C.flags[i] &= static_cast<uint8_t>(~kPreload);
-            }
-            // Shear displacement increment of a relative to b over the last step.
-            const Vec2 n = C.normal[i], tn = perp(n);
-            const Vec2 dv =
-                soft ? Vec2(contact_side_velocity(m, i, false) - contact_side_velocity(m, i, true))
-                     : Vec2(point_velocity(B, C.a[i], C.point[i]) -
-                            point_velocity(B, C.b[i], C.point[i]));
-            const double dus = dv.dot(tn) * dt;
-            JointState s{C.fn[i],    C.fs[i], C.un_prev[i], C.dilation[i],  C.shear_disp[i],
-                         C.flags[i], 0.0,     0.0,          C.plastic_at(i)};
-            const JointProperties& jp = m.joints[C.joint[i]];
-            joint_update<true>(jp, C.length[i], overlap, dus, 0.0, s);
-            C.fn[i] = s.fn, C.fs[i] = s.fs, C.un_prev[i] = s.un_prev, C.dilation[i] = s.dilation;
-            C.shear_disp[i] = s.shear_disp, C.flags[i] = s.flags;
-            if (plastic) C.plastic[i] = s.plastic;
-            if (!damped) continue;
-            C.damp_fn[i] = 0.0, C.damp_fs[i] = 0.0;
-            if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
-              if (pair_length < 0.0) {
-                pair_length = 0.0;
-                for (uint32_t q = c0; q < c1; ++q) pair_length += C.length[q];
-              }
-              const Dashpot d = contact_dashpot(jp, C.length[i], C.length[i] / pair_length,
-                                                pair_mass(B, C.a[i], C.b[i]), -dv.dot(n),
-                                                dv.dot(tn), 0.0, s.flags & kSlipping);
-              C.damp_fn[i] = d.fn, C.damp_fs[i] = d.fs;
-            }
-          }
-        }
+        pair_chunk(m, p0, p1, in, too_deep, C.kind.data(), C.gap.data(), C.normal.data(),
+                   C.point.data(), C.chord.data(), C.flags.data(), C.length.data(), C.fn.data(),
+                   C.fs.data(), C.un_prev.data(), C.dilation.data(), C.shear_disp.data(),
+                   held(C.plastic), held(C.damp_fn), held(C.damp_fs));
       },
       64);
   if (too_deep.any()) throw_overlap(m, too_deep.index());
