@@ -30,27 +30,30 @@ void prepare2d(Model& m) {
   if (m.block_contact_begin.size() != m.blocks.size() + 1) m.build_block_contacts();
 }
 
-// Gravity, loads and contact forces, gathered in a fixed order per block.
+// Gravity, loads and contact forces, gathered in a fixed order per block from its interfaces'
+// sums (Contacts::pair_force, formed by the interfaces stage).
 void resultants2d(Model& m) {
   Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   const Vec2 g = m.settings.gravity;
-  // Each contact's force formed once per block side, the dashpot arrays tested once.
-  const bool damped = !C.damp_fn.empty();
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
       double fx = B.mass[b] * g.x() + B.load_fx[b], fy = B.mass[b] * g.y() + B.load_fy[b];
       double mz = B.load_m[b];
       double applied = B.mass[b] * g.norm() +
                        std::sqrt(B.load_fx[b] * B.load_fx[b] + B.load_fy[b] * B.load_fy[b]);
+      // On side b: the opposite force, its moment about b's centroid from the one about a's
+      // (for side a the arm a - b is zero), the side as arithmetic (a branch on it is
+      // mispredicted).
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
-        const uint32_t i = m.block_contacts[k] >> 1;
-        const double sign = (m.block_contacts[k] & 1) ? -1.0 : 1.0;
-        const double fn = C.total_fn(i, damped), fs = C.total_fs(i, damped);
-        const Vec2 f = sign * Contacts::force_of(fn, fs, C.normal[i]);
-        fx += f.x(), fy += f.y();
-        mz += (C.point[i].x() - B.x[b]) * f.y() - (C.point[i].y() - B.y[b]) * f.x();
-        applied += std::abs(fn) + std::abs(fs);
+        const uint32_t p = m.block_contacts[k] >> 1;
+        const double sign = 1.0 - 2.0 * static_cast<double>(m.block_contacts[k] & 1);
+        const Vec2 f = C.pair_force[p];
+        const uint32_t a = C.a[C.pair_begin[p]];
+        const double dx = B.x[a] - B.x[b], dy = B.y[a] - B.y[b];
+        fx += sign * f.x(), fy += sign * f.y();
+        mz += sign * (C.pair_moment[p] + (dx * f.y() - dy * f.x()));
+        applied += C.pair_load[p];
       }
       B.fx[b] = fx, B.fy[b] = fy, B.moment[b] = mz, B.applied[b] = applied;
     }

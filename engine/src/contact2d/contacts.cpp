@@ -6,6 +6,7 @@ void Contacts::clear() {
   for_each_array([](auto& v) { v.clear(); });
   each_optional([](auto& v) { v.clear(); }, *this);
   pair_begin.assign(1, 0);
+  pair_force.clear(), pair_moment.clear(), pair_load.clear();
 }
 
 void Contacts::push_from(const Contacts& s, size_t i) {

@@ -172,12 +172,14 @@ void detect_contacts(Model& m) {
   const double tol = m.tolerance();
   const size_t n = B.size();
   Contacts& old = m.contacts;
-  // Chord and length are recomputed before they are read (the geometry stage, then the
-  // interfaces): the pass drops them, so that its own arrays fit in their room, as soon as it
-  // cannot fail. It fails only where no joint properties apply to a new contact, which cannot
-  // happen when some assignment covers every contact.
+  // Chord, length and the interfaces' sums are recomputed before they are read (the geometry
+  // stage, then the interfaces): the pass drops them, so that its own arrays fit in their room,
+  // as soon as it cannot fail. It fails only where no joint properties apply to a new contact,
+  // which cannot happen when some assignment covers every contact.
   const auto release_recomputed = [&] {
     std::vector<double>().swap(old.chord), std::vector<double>().swap(old.length);
+    std::vector<Vec2>().swap(old.pair_force);
+    std::vector<double>().swap(old.pair_moment), std::vector<double>().swap(old.pair_load);
   };
   const bool covered = std::any_of(m.joint_table.begin(), m.joint_table.end(), [](const auto& j) {
     return j.tag < 0 && j.group_a < 0 && j.group_b < 0;

@@ -210,7 +210,8 @@ struct StageInputs {
 
 // The interfaces of pairs [p0, p1): each contact's share of joint length, then the joint law.
 // The geometry comes in read-only, and every array the stage writes as its own restrict pointer
-// (plastic, damp_fn and damp_fs null when not held): the compiler may then keep the addresses
+// (plastic, damp_fn and damp_fs null when not held), with the pair's sums for the block sums
+// (pair_force, pair_moment, pair_load, Contacts): the compiler may then keep the addresses
 // of the arrays it reads in registers, which a store through a flag (a byte, which may alias
 // anything) would otherwise make it reload.
 void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, FirstFlagged& too_deep,
@@ -218,8 +219,9 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
                 const double* chord, uint8_t* __restrict flags, double* __restrict length,
                 double* __restrict fn, double* __restrict fs, double* __restrict un_prev,
                 double* __restrict dilation, double* __restrict shear_disp,
-                double* __restrict plastic, double* __restrict damp_fn,
-                double* __restrict damp_fs) {
+                double* __restrict plastic, double* __restrict damp_fn, double* __restrict damp_fs,
+                Vec2* __restrict pair_force, double* __restrict pair_moment,
+                double* __restrict pair_load) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   std::vector<std::pair<double, uint32_t>> along;
@@ -284,6 +286,10 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
         length[i] = std::min(length[i], std::max(own, chord[i]));
       }
     double pair_length = -1.0;  // summed once, for contact damping
+    // The pair's sums for the block sums: force on pa, moment about its centroid, load.
+    Vec2 force = Vec2::Zero();
+    double moment = 0.0, load = 0.0;
+    const double xa = B.x[pa], ya = B.y[pa];
     for (uint32_t i = c0; i < c1; ++i) {
       if (kind[i] == kLost) {
         if (flags[i] & kBonded) flags[i] = static_cast<uint8_t>((flags[i] & ~kBonded) | kBroken);
@@ -321,19 +327,31 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
       fn[i] = s.fn, fs[i] = s.fs, un_prev[i] = s.un_prev, dilation[i] = s.dilation;
       shear_disp[i] = s.shear_disp, flags[i] = s.flags;
       if (in.plastic) plastic[i] = s.plastic;
-      if (!in.damped) continue;
-      damp_fn[i] = 0.0, damp_fs[i] = 0.0;
-      if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
-        if (pair_length < 0.0) {
-          pair_length = 0.0;
-          for (uint32_t q = c0; q < c1; ++q) pair_length += length[q];
+      double total_fn = s.fn, total_fs = s.fs;
+      if (in.damped) {
+        damp_fn[i] = 0.0, damp_fs[i] = 0.0;
+        if ((jp.normal_damping > 0.0 || jp.shear_damping > 0.0) && (s.flags & kTouching)) {
+          if (pair_length < 0.0) {
+            pair_length = 0.0;
+            for (uint32_t q = c0; q < c1; ++q) pair_length += length[q];
+          }
+          const Dashpot d =
+              contact_dashpot(jp, length[i], length[i] / pair_length, pair_mass(B, C.a[i], C.b[i]),
+                              -dv.dot(n), dv.dot(tn), 0.0, s.flags & kSlipping);
+          damp_fn[i] = d.fn, damp_fs[i] = d.fs;
         }
-        const Dashpot d =
-            contact_dashpot(jp, length[i], length[i] / pair_length, pair_mass(B, C.a[i], C.b[i]),
-                            -dv.dot(n), dv.dot(tn), 0.0, s.flags & kSlipping);
-        damp_fn[i] = d.fn, damp_fs[i] = d.fs;
+        total_fn += damp_fn[i], total_fs += damp_fs[i];
       }
+      // The contact's force on the pair's block a (on its own block a: the same or opposite),
+      // the sign as arithmetic: which block owns a contact varies within a pair, and a branch
+      // on it is mispredicted.
+      const double sign = 1.0 - 2.0 * static_cast<double>(C.a[i] != pa);
+      const Vec2 on_a = sign * Contacts::force_of(total_fn, total_fs, n);
+      force += on_a;
+      moment += (point[i].x() - xa) * on_a.y() - (point[i].y() - ya) * on_a.x();
+      load += std::abs(total_fn) + std::abs(total_fs);
     }
+    pair_force[p] = force, pair_moment[p] = moment, pair_load[p] = load;
   }
 }
 
@@ -354,6 +372,9 @@ void update_interfaces(Model& m) {
   } else {
     std::vector<double>().swap(C.damp_fn), std::vector<double>().swap(C.damp_fs);
   }
+  // The interfaces' sums for the block sums, one per pair (dropped by detection passes).
+  C.pair_force.resize(C.pair_count()), C.pair_moment.resize(C.pair_count());
+  C.pair_load.resize(C.pair_count());
   const StageInputs in{m.dt, 0.25 * m.settings.rounding, m.roundoff_gap(), !C.plastic.empty(),
                        damped};
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
@@ -365,7 +386,8 @@ void update_interfaces(Model& m) {
         pair_chunk(m, p0, p1, in, too_deep, C.kind.data(), C.gap.data(), C.normal.data(),
                    C.point.data(), C.chord.data(), C.flags.data(), C.length.data(), C.fn.data(),
                    C.fs.data(), C.un_prev.data(), C.dilation.data(), C.shear_disp.data(),
-                   held(C.plastic), held(C.damp_fn), held(C.damp_fs));
+                   held(C.plastic), held(C.damp_fn), held(C.damp_fs), C.pair_force.data(),
+                   C.pair_moment.data(), C.pair_load.data());
       },
       64);
   if (too_deep.any()) throw_overlap(m, too_deep.index());

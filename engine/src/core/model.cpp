@@ -50,10 +50,15 @@ double Model::tolerance() const {
 
 namespace tessera {
 
+// The interfaces a block takes part in: 3D contacts, 2D pairs (sides from their first contact).
 void Model::build_block_contacts() {
-  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.size();
-  const auto a_of = [&](size_t i) { return dim == 3 ? contacts3[i].a : contacts.a[i]; };
-  const auto b_of = [&](size_t i) { return dim == 3 ? contacts3[i].b : contacts.b[i]; };
+  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.pair_count();
+  const auto a_of = [&](size_t i) {
+    return dim == 3 ? contacts3[i].a : contacts.a[contacts.pair_begin[i]];
+  };
+  const auto b_of = [&](size_t i) {
+    return dim == 3 ? contacts3[i].b : contacts.b[contacts.pair_begin[i]];
+  };
   std::vector<uint32_t> count(n + 1, 0);
   for (size_t i = 0; i < nc; ++i) ++count[a_of(i) + 1], ++count[b_of(i) + 1];
   for (size_t b = 0; b < n; ++b) count[b + 1] += count[b];
@@ -67,7 +72,7 @@ void Model::build_block_contacts() {
 }
 
 std::string Model::block_contacts_problem() const {
-  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.size();
+  const size_t n = block_count(), nc = dim == 3 ? contacts3.size() : contacts.pair_count();
   if (block_contact_begin.size() != n + 1 || block_contact_begin[n] != 2 * nc)
     return "per-block contact lists do not match the contacts";
   for (size_t b = 0; b < n; ++b)
@@ -76,7 +81,8 @@ std::string Model::block_contacts_problem() const {
       const bool side_b = block_contacts[k] & 1;
       const uint32_t owner = i >= nc    ? UINT32_MAX
                              : dim == 3 ? (side_b ? contacts3[i].b : contacts3[i].a)
-                                        : (side_b ? contacts.b[i] : contacts.a[i]);
+                                        : (side_b ? contacts.b[contacts.pair_begin[i]]
+                                                  : contacts.a[contacts.pair_begin[i]]);
       if (owner != b) return "per-block contact list of " + block_label(b) + " is wrong";
     }
   return {};

@@ -298,20 +298,24 @@ void add_contact_forces_to_nodes(Model& m) {
   Continuum& c = m.continuum;
   for (size_t b = 0; b < B.size(); ++b) {
     if (!B.deformable[b]) continue;
+    // The block's interfaces, and each one's contacts: owned by b (at its node) or facing b
+    // (shared between the nodes of the edge faced).
     for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
-      const uint32_t i = m.block_contacts[k] >> 1;
-      const bool side_b = m.block_contacts[k] & 1;
-      const Vec2 f = side_b ? Vec2(-C.force(i)) : C.force(i);
-      if (!side_b) {
-        add_node_force(c, static_cast<size_t>(B.node[C.corner[i]]), f);
-        continue;
-      }
-      const EdgeShare s = feature_share(m, i);
-      if (s.n1 < 0) {
-        add_node_force(c, static_cast<size_t>(s.n0), f);
-      } else {
-        add_node_force(c, static_cast<size_t>(s.n0), (1 - s.w1) * f);
-        add_node_force(c, static_cast<size_t>(s.n1), s.w1 * f);
+      const uint32_t p = m.block_contacts[k] >> 1;
+      for (uint32_t i = C.pair_begin[p]; i < C.pair_begin[p + 1]; ++i) {
+        const bool side_b = C.a[i] != b;
+        const Vec2 f = side_b ? Vec2(-C.force(i)) : C.force(i);
+        if (!side_b) {
+          add_node_force(c, static_cast<size_t>(B.node[C.corner[i]]), f);
+          continue;
+        }
+        const EdgeShare s = feature_share(m, i);
+        if (s.n1 < 0) {
+          add_node_force(c, static_cast<size_t>(s.n0), f);
+        } else {
+          add_node_force(c, static_cast<size_t>(s.n0), (1 - s.w1) * f);
+          add_node_force(c, static_cast<size_t>(s.n1), s.w1 * f);
+        }
       }
     }
   }

@@ -62,6 +62,12 @@ struct Contacts {
   std::vector<double> damp_fn, damp_fs;
   // Interface ranges: contacts of pair p are [pair_begin[p], pair_begin[p+1]).
   std::vector<uint32_t> pair_begin{0};
+  // Per interface, this cycle: the force of its contacts on its first contact's block a, their
+  // moment about that block's centroid, and the sum of their |Fn| + |Fs| (dashpots included).
+  // The interfaces stage writes them pair by pair; the block sums read them, so that a
+  // contact's force is formed once, where the law leaves it, instead of once per block side.
+  std::vector<Vec2> pair_force;
+  std::vector<double> pair_moment, pair_load;
 
   size_t size() const { return a.size(); }
   size_t pair_count() const { return pair_begin.size() - 1; }

@@ -121,8 +121,9 @@ struct Model {
   // How this model runs (validation, profile): not saved, copied with the model.
   RunOptions options = default_run_options();
 
-  // Derived, rebuilt after detection and after restore: contacts touching each block,
-  // as (contact index * 2 + side) with side 0 for a, 1 for b (2D or 3D contacts).
+  // Derived, rebuilt after detection and after restore: the interfaces of each block, as
+  // (index * 2 + side) with side 0 for a, 1 for b: in 3D a contact (one per pair of blocks), in
+  // 2D a pair of blocks (Contacts::pair_begin; its sides those of its first contact).
   std::vector<uint32_t> block_contact_begin, block_contacts;
 
   // Group index by name; creates it when asked.
@@ -143,7 +144,7 @@ struct Model {
   double bond_gap() const { return 1e-3 * tolerance(); }
   // Marks geometry or properties changed: time step and contacts are refreshed before cycling.
   void touch() { dt_dirty = true, detection_due = true; }
-  // Rebuilds the per-block contact lists from each contact's two blocks (2D or 3D contacts).
+  // Rebuilds the per-block interface lists from each interface's two blocks (2D or 3D).
   void build_block_contacts();
   // What is wrong with the per-block contact lists, or empty if they match the contacts.
   std::string block_contacts_problem() const;
