@@ -73,7 +73,7 @@ class TestContactGeometry : public QObject {
 
   // A detection pass carries each contact's history to the same contact (the same corner of the
   // same block against the same block) wherever it now stands in the store, as contacts before
-  // it come and go; new contacts start without history; chord and length are there again.
+  // it come and go; new contacts start without history; length is there again.
   void detectionCarriesHistoryByIdentity() {
     ScriptRun r;
     r.run(row() + "step 1\n");
@@ -118,9 +118,8 @@ class TestContactGeometry : public QObject {
     QCOMPARE(fresh, size_t{2});
     QCOMPARE(moved_up, size_t{4});
     QCOMPARE(moved_down, size_t{4});
-    QCOMPARE(C.chord.size(), C.size());
     QCOMPARE(C.length.size(), C.size());
-    QCOMPARE(m.block_contact_begin.back(), static_cast<uint32_t>(2 * C.size()));
+    QCOMPARE(m.block_contact_begin.back(), static_cast<uint32_t>(2 * C.pair_count()));
   }
 
   // Where joint properties are assigned by group only, a pass that meets a contact none apply to
@@ -140,7 +139,6 @@ class TestContactGeometry : public QObject {
     }
     const Contacts& C = m.contacts;
     QCOMPARE(C.size(), C0.size());
-    QCOMPARE(C.chord.size(), C0.size());
     QCOMPARE(C.length.size(), C0.size());
     for (size_t i = 0; i < C.size(); ++i) {
       QVERIFY(key_of(C, i) == key_of(C0, i));

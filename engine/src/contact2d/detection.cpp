@@ -172,12 +172,12 @@ void detect_contacts(Model& m) {
   const double tol = m.tolerance();
   const size_t n = B.size();
   Contacts& old = m.contacts;
-  // Chord, length and the interfaces' sums are recomputed before they are read (the geometry
-  // stage, then the interfaces): the pass drops them, so that its own arrays fit in their room,
-  // as soon as it cannot fail. It fails only where no joint properties apply to a new contact,
+  // Length and the interfaces' sums are recomputed before they are read (the geometry stage,
+  // then the interfaces): the pass drops them, so that its own arrays fit in their room, as
+  // soon as it cannot fail. It fails only where no joint properties apply to a new contact,
   // which cannot happen when some assignment covers every contact.
   const auto release_recomputed = [&] {
-    std::vector<double>().swap(old.chord), std::vector<double>().swap(old.length);
+    std::vector<double>().swap(old.length);
     std::vector<Vec2>().swap(old.pair_force);
     std::vector<double>().swap(old.pair_moment), std::vector<double>().swap(old.pair_load);
   };
@@ -260,9 +260,9 @@ void detect_contacts(Model& m) {
       }
     }
   };
-  // The check needs a pass of its own unless some assignment covers every contact; chord and
-  // length go after it. Then `from` is filled (room for about as many as last time, or on a
-  // first pass three a pair: two or three corners meet a neighbour).
+  // The check needs a pass of its own unless some assignment covers every contact; length and
+  // the interfaces' sums go after it. Then `from` is filled (room for about as many as last time,
+  // or on a first pass three a pair: two or three corners meet a neighbour).
   if (!covered) {
     match(true);
     release_recomputed();
@@ -345,11 +345,11 @@ void detect_contacts(Model& m) {
     }
   }
   if (k != count) throw std::logic_error("a detection pass found different contacts twice");
-  // The pass's arrays go before chord and length come back.
+  // The pass's arrays go before length comes back.
   std::vector<uint32_t>().swap(from), std::vector<Found>().swap(scratch);
   decltype(pairs)().swap(pairs), std::vector<Box>().swap(boxes);
   give_back();
-  next.chord.assign(count, 0.0), next.length.assign(count, 0.0);
+  next.length.assign(count, 0.0);
   // Interface ranges.
   next.pair_begin.assign(1, 0);
   for (size_t i = 0; i < next.size(); ++i) {

@@ -44,8 +44,9 @@ bool corner_buried(const Blocks& B, uint32_t v, uint32_t b, double overlap) {
 
 // Contact geometry from the current positions for contacts [i0, i1): the nearest feature of the
 // other block to each corner (searched around last cycle's feature), gap, normal, contact point
-// and chord. The outputs are restrict: the compiler may then keep the block arrays' addresses in
-// registers across a contact instead of reloading them after every store.
+// and chord (into `length`, Contacts::length). The outputs are restrict: the compiler may then keep
+// the block arrays' addresses in registers across a contact instead of reloading them after every
+// store.
 void corner_chunk(const Blocks& B, const Contacts& C, size_t i0, size_t i1,
                   uint8_t* __restrict kind, uint32_t* __restrict feature, double* __restrict gap,
                   Vec2* __restrict normal, Vec2* __restrict point, double* __restrict chord) {
@@ -96,7 +97,7 @@ void update_corner_contacts(Model& m) {
   Contacts& C = m.contacts;
   parallel_for(C.size(), [&](size_t i0, size_t i1) {
     corner_chunk(m.blocks, C, i0, i1, C.kind.data(), C.feature.data(), C.gap.data(),
-                 C.normal.data(), C.point.data(), C.chord.data());
+                 C.normal.data(), C.point.data(), C.length.data());
   });
 }
 
@@ -131,7 +132,8 @@ double wedge_length(const Blocks& B, uint32_t a, uint32_t v, const Vec2& nrm, co
 }
 
 // Shares a joint line's length among its contacts, given as (position along the line, index):
-// L = RQ1/2 + RQ2/2 with the neighbours as Q1, Q2, never less than a contact's own chord.
+// L = RQ1/2 + RQ2/2 with the neighbours as Q1, Q2, never less than a contact's own chord (which
+// `length` holds on the way in, Contacts::length).
 // Contacts closer than `merge` stand at one point (two corners meeting face to face): the
 // point's share is split evenly, so that round-off in their order cannot move the length from
 // one to the other from cycle to cycle. A line of one point (a corner whose neighbour lifted
@@ -139,7 +141,7 @@ double wedge_length(const Blocks& B, uint32_t a, uint32_t v, const Vec2& nrm, co
 // (`wedge(i)`).
 template <class Wedge>
 inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
-                         const double* chord, double* length, const Wedge& wedge) {
+                         double* length, const Wedge& wedge) {
   const size_t k = along.size();
   // Order by position, then index (std::pair's order, written out: its three-way comparison
   // costs twice the instructions).
@@ -152,7 +154,7 @@ inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double
     if (before(along[1], along[0])) std::swap(along[0], along[1]);
     if (along[1].first - along[0].first > merge) {
       const double len = 0.5 * (along[1].first - along[0].first);
-      for (const auto& [x, i] : along) length[i] = std::max(len, chord[i]);
+      for (const auto& [x, i] : along) length[i] = std::max(len, length[i]);
       return;
     }
   }
@@ -172,7 +174,7 @@ inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double
   if (k && g1 == k) {
     for (size_t j = 0; j < k; ++j) {
       const uint32_t i = along[j].second;
-      length[i] = std::max(wedge(i) / static_cast<double>(k), chord[i]);
+      length[i] = std::max(wedge(i) / static_cast<double>(k), length[i]);
     }
     return;
   }
@@ -182,7 +184,7 @@ inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double
     const double len = 0.5 * ((g0 > 0 ? centre - prev : 0.0) + (next - centre));
     for (size_t j = g0; j < g1; ++j) {
       const uint32_t i = along[j].second;
-      length[i] = std::max(len / static_cast<double>(g1 - g0), chord[i]);
+      length[i] = std::max(len / static_cast<double>(g1 - g0), length[i]);
     }
     prev = centre, centre = next, g0 = g1, g1 = g2;
   }
@@ -216,16 +218,16 @@ struct StageInputs {
 // anything) would otherwise make it reload.
 void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, FirstFlagged& too_deep,
                 const uint8_t* kind, const double* gap, const Vec2* normal, const Vec2* point,
-                const double* chord, uint8_t* __restrict flags, double* __restrict length,
-                double* __restrict fn, double* __restrict fs, double* __restrict un_prev,
-                double* __restrict dilation, double* __restrict shear_disp,
-                double* __restrict plastic, double* __restrict damp_fn, double* __restrict damp_fs,
-                Vec2* __restrict pair_force, double* __restrict pair_moment,
-                double* __restrict pair_load) {
+                uint8_t* __restrict flags, double* __restrict length, double* __restrict fn,
+                double* __restrict fs, double* __restrict un_prev, double* __restrict dilation,
+                double* __restrict shear_disp, double* __restrict plastic,
+                double* __restrict damp_fn, double* __restrict damp_fs, Vec2* __restrict pair_force,
+                double* __restrict pair_moment, double* __restrict pair_load) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
   std::vector<std::pair<double, uint32_t>> along;
   std::vector<uint8_t> placed;
+  std::vector<double> chords;
   const auto wedge = [&](uint32_t i) {
     return wedge_length(B, C.a[i], C.corner[i], normal[i], point[i], gap[i]);
   };
@@ -235,7 +237,6 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
   // another along two faces); each line shares its length on its own.
   const auto general_lines = [&](uint32_t c0, uint32_t c1) {
     placed.assign(c1 - c0, 0);
-    for (uint32_t i = c0; i < c1; ++i) length[i] = 0.0;
     for (uint32_t i = c0; i < c1; ++i) {
       if (kind[i] == kLost || placed[i - c0]) continue;
       const Vec2 n0 = facing(i), t = perp(n0);
@@ -245,7 +246,7 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
           placed[q - c0] = 1;
           along.emplace_back(point[q].dot(t), q);
         }
-      share_length(along, in.merge, chord, length, wedge);
+      share_length(along, in.merge, length, wedge);
     }
   };
   for (size_t p = p0; p < p1; ++p) {
@@ -253,13 +254,16 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
     // The pair's blocks (either may own a contact), and the deepest overlap believed.
     const uint32_t pa = C.a[c0], pb = C.b[c0];
     const double depth_limit = kOverlapLimit * max_contact_depth(B, pa, pb);
+    // Whether a block is deformable: its nodes' clipping below needs the chords the shares
+    // replace in `length` (a lost contact's is 0, and its length stays 0).
+    const bool soft = B.deformable[pa] || B.deformable[pb];
+    if (soft) chords.assign(length + c0, length + c1);
     // Fast path (convex blocks, nearly every pair): all contacts face one way, so they form one
     // joint line, the same list the general path below would build.
     bool one_line = true;
     Vec2 n_first = Vec2::Zero(), t_first = Vec2::Zero();
     along.clear();
     for (uint32_t i = c0; i < c1 && one_line; ++i) {
-      length[i] = 0.0;
       if (kind[i] == kLost) continue;
       const Vec2 f = facing(i);
       if (along.empty())
@@ -269,12 +273,10 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
       along.emplace_back(point[i].dot(t_first), i);
     }
     if (one_line) {
-      if (!along.empty()) share_length(along, in.merge, chord, length, wedge);
+      if (!along.empty()) share_length(along, in.merge, length, wedge);
     } else {
       general_lines(c0, c1);
     }
-    // Whether a block is deformable.
-    const bool soft = B.deformable[pa] || B.deformable[pb];
     // A node of a deformable block stands for its own stretch of outline at most: a light node
     // alone against a long edge must not take the edge's stiffness. (A pair's contacts can be
     // owned by either block: checked per contact.)
@@ -283,7 +285,7 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
         const uint32_t blk = C.a[i];
         if (!B.deformable[blk]) continue;
         const double own = B.vertex_share(blk, C.corner[i]);
-        length[i] = std::min(length[i], std::max(own, chord[i]));
+        length[i] = std::min(length[i], std::max(own, chords[i - c0]));
       }
     double pair_length = -1.0;  // summed once, for contact damping
     // The pair's sums for the block sums: force on pa, moment about its centroid, load.
@@ -384,10 +386,10 @@ void update_interfaces(Model& m) {
       C.pair_count(),
       [&](size_t p0, size_t p1) {
         pair_chunk(m, p0, p1, in, too_deep, C.kind.data(), C.gap.data(), C.normal.data(),
-                   C.point.data(), C.chord.data(), C.flags.data(), C.length.data(), C.fn.data(),
-                   C.fs.data(), C.un_prev.data(), C.dilation.data(), C.shear_disp.data(),
-                   held(C.plastic), held(C.damp_fn), held(C.damp_fs), C.pair_force.data(),
-                   C.pair_moment.data(), C.pair_load.data());
+                   C.point.data(), C.flags.data(), C.length.data(), C.fn.data(), C.fs.data(),
+                   C.un_prev.data(), C.dilation.data(), C.shear_disp.data(), held(C.plastic),
+                   held(C.damp_fn), held(C.damp_fs), C.pair_force.data(), C.pair_moment.data(),
+                   C.pair_load.data());
       },
       64);
   if (too_deep.any()) throw_overlap(m, too_deep.index());

@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 18;
+constexpr uint32_t kVersion = 19;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 // Sub-contacts and their node links are written as their bytes: a change of either's layout
 // changes the file, and kVersion with it.
@@ -171,7 +171,7 @@ void fields(IO& io, auto& m) {
   auto& C = m.contacts;
   io.vec(C.a), io.vec(C.b), io.vec(C.corner), io.vec(C.slot), io.vec(C.kind), io.vec(C.feature),
       io.vec(C.flags);
-  io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap), io.vec(C.chord);
+  io.vec(C.joint), io.vec(C.tag), io.vec(C.normal), io.vec(C.point), io.vec(C.gap);
   io.vec(C.length), io.vec(C.fn), io.vec(C.fs), io.vec(C.un_prev), io.vec(C.dilation);
   io.vec(C.shear_disp), io.vec(C.closure), io.vec(C.plastic);
   io.vec(C.damp_fn), io.vec(C.damp_fs), io.vec(C.pair_begin);

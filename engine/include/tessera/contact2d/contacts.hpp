@@ -45,9 +45,12 @@ struct Contacts {
   std::vector<uint32_t> joint;  // index into the model's joint property table
   std::vector<int> tag;         // joint tag of the face met when the contact was made
   // Geometry of the current cycle: unit normal (from b towards a), contact point, gap (negative
-  // when overlapping), chord of the rounded arc, and the share of interface length.
+  // when overlapping), and the share of interface length. Between a cycle's geometry stage and
+  // its interfaces `length` holds the chord of the rounded arc instead (0 for a lost contact):
+  // the length's lower bound, which the interfaces read just before they write the share over
+  // it (a chord of its own would be 8 bytes a contact).
   std::vector<Vec2> normal, point;
-  std::vector<double> gap, chord, length;
+  std::vector<double> gap, length;
   // Joint law state: normal and shear force on a (compression positive), the normal
   // displacement of the last cycle, dilation and total shear displacement.
   std::vector<double> fn, fs, un_prev, dilation, shear_disp;
@@ -98,11 +101,11 @@ struct Contacts {
   template <class F, class... Cs>
   static void each_array(F&& f, Cs&... c) {
     each_carried(f, c...);
-    f(c.chord...), f(c.length...);
+    f(c.length...);
   }
-  // The same less `chord` and `length`, which every cycle computes afresh before it reads them
-  // (the geometry stage, then the interfaces): a detection pass drops those two while it runs
-  // and gives them back as zeros, and carries these.
+  // The same less `length`, which every cycle computes afresh before it reads it (the geometry
+  // stage, then the interfaces): a detection pass drops it while it runs and gives it back as
+  // zeros, and carries these.
   template <class F, class... Cs>
   static void each_carried(F&& f, Cs&... c) {
     f(c.a...), f(c.b...), f(c.corner...), f(c.slot...), f(c.kind...), f(c.feature...);
