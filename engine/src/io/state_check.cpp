@@ -80,8 +80,7 @@ void check_contacts2(Checker& c, const Model& m) {
   c.size(C.feature, n, "contact features"), c.size(C.flags, n, "contact flags");
   c.size(C.joint, n, "contact joints"), c.size(C.tag, n, "contact tags");
   c.size(C.normal, n, "contact normals"), c.size(C.point, n, "contact points");
-  for (auto* v :
-       {&C.gap, &C.length, &C.fn, &C.fs, &C.un_prev, &C.dilation, &C.shear_disp})
+  for (auto* v : {&C.gap, &C.length, &C.fn, &C.fs, &C.un_prev, &C.dilation, &C.shear_disp})
     c.size(*v, n, "a contact array");
   for (auto* v : {&C.closure, &C.plastic, &C.damp_fn, &C.damp_fs})
     if (!v->empty()) c.size(*v, n, "a contact array held when used");
