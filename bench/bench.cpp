@@ -188,12 +188,15 @@ int main(int argc, char** argv) {
   app.add_option("--solve", ratio, "Instead of --cycles, solve to this unbalanced-force ratio");
   app.add_option("--threads", threads, "Worker threads")->check(CLI::PositiveNumber);
   bool kernel = false, scaled = false;
-  uint64_t trace = 0;
+  uint64_t trace = 0, warmup = 0;
   std::string damping = "local";
   double alpha = -1.0;
   app.add_option("--trace", trace,
                  "--solve: print the cycle, the ratio and the top course's settlement every N "
                  "cycles to stderr");
+  app.add_option("--warmup", warmup,
+                 "Cycles run before the timed ones (through solve(), so that a profiler toggled "
+                 "on run_cycles sees only the timed cycles): to time a settled model");
   app.add_option("--damping", damping, "local (alpha 0.8) or kinetic (alpha 0.2)")
       ->check(CLI::IsMember({"local", "kinetic"}));
   app.add_option("--alpha", alpha, "The damping's alpha instead of its default")
@@ -221,6 +224,7 @@ int main(int argc, char** argv) {
     detect_contacts3(m);
   else
     detect_contacts(m);
+  if (warmup) solve(m, 0.0, warmup);
   profile = Profile{};
   const auto t0 = std::chrono::steady_clock::now();
   uint64_t ran = 0;
