@@ -204,7 +204,7 @@ inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double
                 what.str());
 }
 
-// What the contact stage reads beside the model, once per stage.
+// What the interfaces stage reads beside the model, once per stage.
 struct StageInputs {
   double dt, merge, roundoff;
   bool plastic, damped;
@@ -314,8 +314,8 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
         fs[i] *= length[i];
         flags[i] &= static_cast<uint8_t>(~kPreload);
       }
-      // Shear displacement increment of a relative to b over the last step. (A deformable
-      // side's velocity reads this contact's point and feature, set above, through the model.)
+      // Shear displacement increment of a relative to b over the last step (a deformable side's
+      // velocity from its nodes, through the model).
       const Vec2 n = normal[i], tn = perp(n);
       const Vec2 dv =
           soft ? Vec2(contact_side_velocity(m, i, false) - contact_side_velocity(m, i, true))

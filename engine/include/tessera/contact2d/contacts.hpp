@@ -77,19 +77,14 @@ struct Contacts {
   double closure_at(size_t i) const { return closure.empty() ? 0.0 : closure[i]; }
   double plastic_at(size_t i) const { return plastic.empty() ? 0.0 : plastic[i]; }
   // Normal and shear force on block a this cycle, dashpot included (compression positive).
-  // `damped` is !damp_fn.empty(), which a loop over many contacts tests once.
-  double total_fn(size_t i, bool damped) const { return damped ? fn[i] + damp_fn[i] : fn[i]; }
-  double total_fs(size_t i, bool damped) const { return damped ? fs[i] + damp_fs[i] : fs[i]; }
-  double total_fn(size_t i) const { return total_fn(i, !damp_fn.empty()); }
-  double total_fs(size_t i) const { return total_fs(i, !damp_fs.empty()); }
+  double total_fn(size_t i) const { return damp_fn.empty() ? fn[i] : fn[i] + damp_fn[i]; }
+  double total_fs(size_t i) const { return damp_fs.empty() ? fs[i] : fs[i] + damp_fs[i]; }
   // Force on block a (block b takes the opposite) from its normal and shear force and the unit
   // normal: formed from the law's forces rather than kept (24 bytes a contact).
   static Vec2 force_of(double total_fn, double total_fs, const Vec2& n) {
     return total_fn * n + total_fs * perp(n);
   }
   Vec2 force(size_t i) const { return force_of(total_fn(i), total_fs(i), normal[i]); }
-  // |Fn| + |Fs|, for the unbalanced-force ratio.
-  double force_mag(size_t i) const { return std::abs(total_fn(i)) + std::abs(total_fs(i)); }
   // Gives an optional array (closure, plastic, damp_fn, damp_fs) one zero per contact if it has
   // none.
   void hold(std::vector<double>& optional) {
