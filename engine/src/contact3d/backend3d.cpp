@@ -149,11 +149,26 @@ double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
   return M_PI * (q0.conjugate() * q1).vec().norm();
 }
 
+// Whether a contact of block b will re-fit its plane or rebuild its sub-contacts in the next
+// cycle's geometry stage, reading b's vertices and edge directions.
+bool vertices_read(const Model& m, size_t b, double refresh) {
+  for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k)
+    if (!follows_face_plane(m.contacts3[m.block_contacts[k] >> 1], refresh)) return true;
+  return false;
+}
+
+// The block's face planes follow its body every cycle, its vertices only if a contact reads them.
+void move_surface(const Model& m, Blocks3& B, size_t b, double refresh) {
+  B.update_planes(b);
+  if (vertices_read(m, b, refresh)) B.update_vertices(b);
+}
+
 void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   Blocks3& B = m.blocks3;
   const double dt = m.dt;
   const auto& S = m.block_scale;
   const size_t n = B.size();
+  const double refresh = plane_refresh_drift(m);
   out.reset(n);
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
@@ -197,7 +212,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
         step_body(body, f, t, dt);
       }
       B.omega[b] = body.mass > 0.0 && fix != kFix3All ? body.angular_velocity() : B.fixed_w[b];
-      B.update_world(b);
+      move_surface(m, B, b, refresh);
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
                      B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
       out.jump[b] =
@@ -207,8 +222,9 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   });
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b)
-      if (B.is_slave(b) && !B.deformable[b]) B.update_world(b);  // (zoned: moved by nodes)
+      if (B.is_slave(b) && !B.deformable[b]) move_surface(m, B, b, refresh);  // (zoned: nodes)
   });
+  B.vertices_behind = true;
 }
 
 // Each body: the joint area in touch is at most its surface (all its pieces'), at most

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/core/parallel.hpp"
+
 namespace tessera {
 
 namespace {
@@ -166,16 +168,43 @@ void Blocks3::set_density(size_t b, double density) {
 }
 
 void Blocks3::update_world(size_t b) {
+  update_planes(b);
+  update_vertices(b);
+}
+
+void Blocks3::update_planes(size_t b) {
+  const RigidBody3& moving = body[static_cast<size_t>(master[b])];
+  const Mat3 r = moving.orientation.toRotationMatrix();
+  const Vec3 c = moving.position;
+  // (Through pointers that alias nothing: the stores do not make the compiler reload the rest.)
+  const uint32_t f0 = face_begin[b], f1 = face_begin[b + 1];
+  const Vec3* __restrict ln = local_normal.data();
+  const double* __restrict lo = local_offset.data();
+  Vec3* __restrict wn = world_normal.data();
+  double* __restrict wo = world_offset.data();
+  for (uint32_t f = f0; f < f1; ++f) {
+    const Vec3 n = r * ln[f];
+    wn[f] = n;
+    wo[f] = n.dot(c) + lo[f];
+  }
+}
+
+void Blocks3::update_vertices(size_t b) {
   const RigidBody3& moving = body[static_cast<size_t>(master[b])];
   const Mat3 r = moving.orientation.toRotationMatrix();
   const Vec3& c = moving.position;
   for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v)
     world_vertex[v] = c + r * local_vertex[v];
-  for (uint32_t f = face_begin[b]; f < face_begin[b + 1]; ++f) {
-    world_normal[f] = r * local_normal[f];
-    world_offset[f] = world_normal[f].dot(c) + local_offset[f];
-  }
   for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
+}
+
+void Blocks3::catch_up() {
+  if (!vertices_behind) return;
+  parallel_for(size(), [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      if (!deformable[b]) update_vertices(b);
+  });
+  vertices_behind = false;
 }
 
 void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>& densities) {

@@ -58,6 +58,7 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase3(const std::vector<Box3>&
 }  // namespace
 
 void detect_contacts3(Model& m) {
+  m.blocks3.catch_up();
   const Blocks3& B = m.blocks3;
   const double tol = m.tolerance();
   std::vector<Contact3> next;

@@ -185,8 +185,8 @@ void update_plane3(const Model& m, Contact3& c) {
   // The plane moves with the blocks: the same candidate, re-evaluated (a face's normal is read
   // from the block's cache; an edge pair's needs the support values).
   PlaneFit fit;
-  const double refresh = 0.01 * m.tolerance();
-  if (c.drift < refresh && c.kind != kPlaneEdges) {
+  const double refresh = plane_refresh_drift(m);
+  if (follows_face_plane(c, refresh)) {
     fit.normal = c.kind == kPlaneFaceB ? B.world_normal[c.ib] : Vec3(-B.world_normal[c.ia]);
     follow(m, c, fit.normal);
   } else {

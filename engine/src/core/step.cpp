@@ -69,7 +69,10 @@ void prepare(Model& m) {
   }
 }
 
-void step(Model& m) {
+namespace {
+
+// One cycle, leaving the 3D blocks' vertices behind their bodies where no contact read them.
+void cycle(Model& m) {
   const Backend& be = backend(m);
   const RunOptions& run = m.options;
   BlockMotion motion;
@@ -107,27 +110,48 @@ void step(Model& m) {
   sample_histories(m);
 }
 
+// Whoever sees the model between cycles (a progress report, the caller after a run, however it
+// ends) sees every vertex where its block is.
+struct CatchUp {
+  Model& m;
+  ~CatchUp() { m.blocks3.catch_up(); }
+};
+
+bool report(Model& m, const Progress& progress) {
+  m.blocks3.catch_up();
+  return progress(m);
+}
+
+}  // namespace
+
+void step(Model& m) {
+  const CatchUp after{m};
+  cycle(m);
+}
+
 uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t every) {
+  const CatchUp after{m};
   prepare(m);
   for (uint64_t i = 0; i < n; ++i) {
-    step(m);
-    if (progress && every && (i + 1) % every == 0 && !progress(m)) return i + 1;
+    cycle(m);
+    if (progress && every && (i + 1) % every == 0 && !report(m, progress)) return i + 1;
   }
   return n;
 }
 
 SolveResult solve(Model& m, double ratio, uint64_t max_cycles, const Progress& progress,
                   uint64_t every) {
+  const CatchUp after{m};
   prepare(m);
   SolveResult r;
   while (r.cycles < max_cycles) {
-    step(m);
+    cycle(m);
     ++r.cycles;
     if (m.ratio <= ratio) {
       r.converged = true;
       break;
     }
-    if (progress && every && r.cycles % every == 0 && !progress(m)) {
+    if (progress && every && r.cycles % every == 0 && !report(m, progress)) {
       r.stopped = true;
       break;
     }

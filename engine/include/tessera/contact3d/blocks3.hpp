@@ -2,7 +2,8 @@
 //
 // Design: per-block motion is a RigidBody3 (quaternion orientation, angular momentum); the shape
 // is stored once in the block's principal frame about its centroid, and world positions of
-// vertices, face normals and edge directions are a cache refreshed after each step. Faces list
+// vertices, face normals and edge directions are a cache refreshed after each step (the
+// vertices and edge directions only where the cycle reads them: see vertices_behind). Faces list
 // their vertices counter-clockwise seen from outside as global vertex indices; each face keeps
 // the joint tag of the cut that made it. The distinct edge directions of a block are kept apart
 // (a box has three): the common-plane search needs only directions, not edges.
@@ -70,6 +71,10 @@ struct Blocks3 {
   std::vector<uint32_t> node_begin, node_end, zone_begin, zone_end;
   // Cold data.
   std::vector<int> group, material, id;
+  // Set by the cycle, which moves every block's face planes each step but its vertices and edge
+  // directions only when a contact of the block is about to read them (a plane re-fit or
+  // rebuild); catch_up() at the end of a run and before a detection pass makes all current.
+  bool vertices_behind = false;
 
   size_t size() const { return body.size(); }
   // Adds a convex block from a polyhedron in world coordinates; face_tags per face (or empty).
@@ -79,8 +84,13 @@ struct Blocks3 {
   // Removes the blocks whose flag is set; returns the new index of every old block (-1: gone).
   std::vector<int> remove(const std::vector<uint8_t>& doomed);
   void set_density(size_t b, double density);
-  // Refreshes the world cache of block b from its position and orientation.
+  // Refreshes the world cache of block b from its position and orientation: the face planes
+  // (update_planes) and the vertices and edge directions (update_vertices).
   void update_world(size_t b);
+  void update_planes(size_t b);
+  void update_vertices(size_t b);
+  // Brings every rigid block's vertices and edge directions up to its body if vertices_behind.
+  void catch_up();
   // The block's surface in world coordinates (vertex indices local to the block).
   Polyhedron polyhedron(size_t b) const;
   // Joins blocks into one body (the first is the master): combined mass, centroid and inertia
