@@ -34,15 +34,6 @@ void prepare3d(Model& m) {
   if (m.block_contact_begin.size() != B.size() + 1) m.build_block_contacts();
 }
 
-void geometry3d(Model& m) {
-  parallel_for(
-      m.contacts3.size(),
-      [&](size_t c0, size_t c1) {
-        for (size_t i = c0; i < c1; ++i) update_plane3(m, m.contacts3[i]);
-      },
-      64);
-}
-
 // Deepest plausible overlap between two blocks: a quarter of the smaller one's size (as 2D).
 double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
   return 0.25 * std::min(B.bound_radius[a], B.bound_radius[b]);
@@ -61,6 +52,8 @@ double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
                 where.str(), "a corner of the faces' overlap on their common plane");
 }
 
+// Each contact's plane and sub-contacts moved with its blocks, then the joint law at its
+// sub-contacts: one pass over the sub-contacts, which are most of the cycle's memory.
 void joint_forces3d(Model& m) {
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
@@ -69,6 +62,7 @@ void joint_forces3d(Model& m) {
       [&](size_t c0, size_t c1) {
         for (size_t i = c0; i < c1; ++i) {
           Contact3& c = m.contacts3[i];
+          update_plane3(m, c);
           const double deepest = joint_forces3(m, c);
           if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b))
             too_deep.flag(static_cast<uint32_t>(i));
@@ -259,7 +253,7 @@ double kinetic_energy3d(const Model& m) {
 const Backend& backend3d() {
   static const Backend be{.prepare = prepare3d,
                           .detect = detect_contacts3,
-                          .geometry = geometry3d,
+                          .geometry = nullptr,
                           .joint_forces = joint_forces3d,
                           .resultants = resultants3d,
                           .power = power3d,

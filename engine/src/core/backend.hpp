@@ -55,8 +55,8 @@ struct Backend {
   void (*prepare)(Model& m);
   // Detection pass: broad phase, contact search, merge with the contacts that persist.
   void (*detect)(Model& m);
-  // Contact geometry from the current positions (2D corners and features, 3D common planes and
-  // sub-contacts).
+  // Contact geometry from the current positions (2D corners and features); null in 3D, where
+  // joint_forces moves each contact's common plane and sub-contacts just before its joint law.
   void (*geometry)(Model& m);
   // Joint law at every contact (2D: shares of joint length first), giving contact forces.
   void (*joint_forces)(Model& m);

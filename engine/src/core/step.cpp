@@ -82,7 +82,7 @@ void cycle(Model& m) {
     StageTimer t(run, kStageDetect);
     if (m.detection_due) be.detect(m);
   }
-  {
+  if (be.geometry) {
     StageTimer t(run, kStageContacts);
     be.geometry(m);
   }

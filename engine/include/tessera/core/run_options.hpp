@@ -7,7 +7,8 @@
 
 namespace tessera {
 
-// Stages of one cycle, each timed into the profile.
+// Stages of one cycle, each timed into the profile (3D contacts move their planes in the
+// interfaces stage, contact by contact: its contacts stage takes no time).
 enum Stage : int {
   kStageDetect,
   kStageContacts,
