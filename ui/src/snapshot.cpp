@@ -381,6 +381,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
   s.cycle = m.cycle, s.time = m.time, s.dt = m.dt, s.ratio = m.ratio;
   s.rounding = m.settings.rounding;
   if (m.dim == 3) {
+    m.blocks3.catch_up();  // (a progress report may come while the vertices lag their blocks)
     copy_blocks3(m, s);
     copy_bolts(m, s);
     copy_catalogue(m, s);

@@ -189,7 +189,7 @@ void Blocks3::update_planes(size_t b) {
   }
 }
 
-void Blocks3::update_vertices(size_t b) {
+void Blocks3::update_vertices(size_t b) const {
   const RigidBody3& moving = body[static_cast<size_t>(master[b])];
   const Mat3 r = moving.orientation.toRotationMatrix();
   const Vec3& c = moving.position;
@@ -198,7 +198,7 @@ void Blocks3::update_vertices(size_t b) {
   for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
 }
 
-void Blocks3::catch_up() {
+void Blocks3::catch_up() const {
   if (!vertices_behind) return;
   parallel_for(size(), [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b)
@@ -267,6 +267,7 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
 }
 
 Polyhedron Blocks3::polyhedron(size_t b) const {
+  catch_up();
   Polyhedron p;
   const uint32_t v0 = vert_begin[b];
   for (uint32_t v = v0; v < vert_begin[b + 1]; ++v) p.vertices.push_back(world_vertex[v]);

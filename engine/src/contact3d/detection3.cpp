@@ -107,6 +107,7 @@ void detect_contacts3(Model& m) {
 
 std::string find_overlap3(const Model& m) {
   const Blocks3& B = m.blocks3;
+  B.catch_up();
   const double tol = m.tolerance();
   for (const auto& [lo, hi] : broad_phase3(block_boxes3(B, 0.0))) {
     const PlaneFit fit = best_plane(B, lo, hi);

@@ -110,17 +110,12 @@ void cycle(Model& m) {
   sample_histories(m);
 }
 
-// Whoever sees the model between cycles (a progress report, the caller after a run, however it
-// ends) sees every vertex where its block is.
+// The caller after a run, however it ends, sees every vertex where its block is (a progress
+// report, called every cycle by scripts, leaves that to what reads the vertices).
 struct CatchUp {
   Model& m;
   ~CatchUp() { m.blocks3.catch_up(); }
 };
-
-bool report(Model& m, const Progress& progress) {
-  m.blocks3.catch_up();
-  return progress(m);
-}
 
 }  // namespace
 
@@ -134,7 +129,7 @@ uint64_t run_cycles(Model& m, uint64_t n, const Progress& progress, uint64_t eve
   prepare(m);
   for (uint64_t i = 0; i < n; ++i) {
     cycle(m);
-    if (progress && every && (i + 1) % every == 0 && !report(m, progress)) return i + 1;
+    if (progress && every && (i + 1) % every == 0 && !progress(m)) return i + 1;
   }
   return n;
 }
@@ -151,7 +146,7 @@ SolveResult solve(Model& m, double ratio, uint64_t max_cycles, const Progress& p
       r.converged = true;
       break;
     }
-    if (progress && every && r.cycles % every == 0 && !report(m, progress)) {
+    if (progress && every && r.cycles % every == 0 && !progress(m)) {
       r.stopped = true;
       break;
     }

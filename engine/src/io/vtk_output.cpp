@@ -235,6 +235,7 @@ void write_support(const Model& m, const std::string& path) {
 
 // 3D blocks: every face a polygon, carrying its block's data and its own joint tag.
 void write_blocks3(const Model& m, const std::string& path) {
+  m.blocks3.catch_up();
   const Blocks3& B = m.blocks3;
   const size_t nf = B.local_normal.size();
   std::vector<uint32_t> owner(nf);

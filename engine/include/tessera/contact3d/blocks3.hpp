@@ -46,7 +46,8 @@ struct Blocks3 {
   std::vector<double> volume, surface, bound_radius;
   // Vertices of block b are [vert_begin[b], vert_begin[b+1]).
   std::vector<uint32_t> vert_begin{0};
-  std::vector<Vec3> local_vertex, world_vertex;
+  std::vector<Vec3> local_vertex;
+  mutable std::vector<Vec3> world_vertex;  // (a cache: see vertices_behind)
   // Faces of block b are [face_begin[b], face_begin[b+1]); face f's vertices are
   // face_vert[fv_begin[f] .. fv_begin[f+1]) (global vertex indices, counter-clockwise outside).
   std::vector<uint32_t> face_begin{0}, fv_begin{0}, face_vert;
@@ -56,7 +57,8 @@ struct Blocks3 {
   std::vector<int> face_tag;
   // Distinct edge directions of block b: [dir_begin[b], dir_begin[b+1]).
   std::vector<uint32_t> dir_begin{0};
-  std::vector<Vec3> local_dir, world_dir;
+  std::vector<Vec3> local_dir;
+  mutable std::vector<Vec3> world_dir;
   // The block whose body moves this one (itself unless it is a slave piece of a concave block).
   std::vector<int32_t> master;
   // Deformable blocks (§5.3.1): the block moves with its zones' nodes, not as a body. Each vertex
@@ -73,8 +75,9 @@ struct Blocks3 {
   std::vector<int> group, material, id;
   // Set by the cycle, which moves every block's face planes each step but its vertices and edge
   // directions only when a contact of the block is about to read them (a plane re-fit or
-  // rebuild); catch_up() at the end of a run and before a detection pass makes all current.
-  bool vertices_behind = false;
+  // rebuild). catch_up() makes all current: a detection pass, the end of a run, and whatever
+  // reads the vertices in a progress report (output, snapshots) call it first.
+  mutable bool vertices_behind = false;
 
   size_t size() const { return body.size(); }
   // Adds a convex block from a polyhedron in world coordinates; face_tags per face (or empty).
@@ -88,9 +91,10 @@ struct Blocks3 {
   // (update_planes) and the vertices and edge directions (update_vertices).
   void update_world(size_t b);
   void update_planes(size_t b);
-  void update_vertices(size_t b);
-  // Brings every rigid block's vertices and edge directions up to its body if vertices_behind.
-  void catch_up();
+  void update_vertices(size_t b) const;
+  // Brings every rigid block's vertices and edge directions up to its body if vertices_behind
+  // (not thread-safe: one thread at a time reads a model that may be behind).
+  void catch_up() const;
   // The block's surface in world coordinates (vertex indices local to the block).
   Polyhedron polyhedron(size_t b) const;
   // Joins blocks into one body (the first is the master): combined mass, centroid and inertia
