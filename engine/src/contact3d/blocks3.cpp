@@ -132,6 +132,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
 }
 
 std::vector<int> Blocks3::remove(const std::vector<uint8_t>& doomed) {
+  catch_up();  // (the blocks kept are copied as current)
   Blocks3 kept;
   std::vector<int> index(size(), -1);
   for (size_t b = 0; b < size(); ++b) {
@@ -208,6 +209,7 @@ void Blocks3::catch_up() const {
 }
 
 void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>& densities) {
+  catch_up();
   // Mass, centroid and inertia about the common centroid (parallel axes).
   double mass = 0.0;
   Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();

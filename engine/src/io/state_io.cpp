@@ -292,6 +292,7 @@ void fields(IO& io, auto& m) {
 }  // namespace
 
 void save_state(const Model& m, const std::string& path) {
+  m.blocks3.catch_up();  // the file holds the vertices where the blocks are
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
   out.write(kMagic, sizeof kMagic);
