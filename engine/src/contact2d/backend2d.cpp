@@ -43,11 +43,10 @@ void resultants2d(Model& m) {
       double applied = B.mass[b] * g.norm() +
                        std::sqrt(B.load_fx[b] * B.load_fx[b] + B.load_fy[b] * B.load_fy[b]);
       // On side b: the opposite force, its moment about b's centroid from the one about a's
-      // (for side a the arm a - b is zero), the side as arithmetic (a branch on it is
-      // mispredicted).
+      // (for side a the arm a - b is zero).
       for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
         const uint32_t p = m.block_contacts[k] >> 1;
-        const double sign = 1.0 - 2.0 * static_cast<double>(m.block_contacts[k] & 1);
+        const double sign = Contacts::side_sign(m.block_contacts[k] & 1);
         const Vec2 f = C.pair_force[p];
         const uint32_t a = C.a[C.pair_begin[p]];
         const double dx = B.x[a] - B.x[b], dy = B.y[a] - B.y[b];

@@ -344,10 +344,8 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
         }
         total_fn += damp_fn[i], total_fs += damp_fs[i];
       }
-      // The contact's force on the pair's block a (on its own block a: the same or opposite),
-      // the sign as arithmetic: which block owns a contact varies within a pair, and a branch
-      // on it is mispredicted.
-      const double sign = 1.0 - 2.0 * static_cast<double>(C.a[i] != pa);
+      // The contact's force on the pair's block a (on its own block a: the same or opposite).
+      const double sign = Contacts::side_sign(C.a[i] != pa);
       const Vec2 on_a = sign * Contacts::force_of(total_fn, total_fs, n);
       force += on_a;
       moment += (point[i].x() - xa) * on_a.y() - (point[i].y() - ya) * on_a.x();

@@ -143,8 +143,8 @@ double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
   return M_PI * (q0.conjugate() * q1).vec().norm();
 }
 
-// Whether a contact of block b will re-fit its plane or rebuild its sub-contacts in the next
-// cycle's geometry stage, reading b's vertices and edge directions.
+// Whether a contact of block b will re-fit its plane or rebuild its sub-contacts when the next
+// cycle moves it (update_plane3), reading b's vertices and edge directions.
 bool vertices_read(const Model& m, size_t b, double refresh) {
   for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k)
     if (!follows_face_plane(m.contacts3[m.block_contacts[k] >> 1], refresh)) return true;

@@ -76,7 +76,8 @@ struct Blocks3 {
   // Set by the cycle, which moves every block's face planes each step but its vertices and edge
   // directions only when a contact of the block is about to read them (a plane re-fit or
   // rebuild). catch_up() makes all current: a detection pass, the end of a run, and whatever
-  // reads the vertices in a progress report (output, snapshots) call it first.
+  // reads or copies the vertices (output, snapshots, polyhedron, remove, join, state files)
+  // call it first.
   mutable bool vertices_behind = false;
 
   size_t size() const { return body.size(); }
