@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "contact3d/face_overlap.hpp"
 #include "core/coulomb_law.hpp"
@@ -168,13 +169,19 @@ void follow(const Model& m, Contact3& c, const Vec3& n) {
   const double mna = ma_n.dot(n), mnb = mb_n.dot(n);
   const double dt = m.dt;
   c.normal = n;
-  // The gap (da - ma_n . p) / mna - (db - mb_n . p) / mnb, as g0 - k . p: no division a point.
-  const double g0 = da / mna - db / mnb;
-  const Vec3 k = ma_n / mna - mb_n / mnb;
-  const Vec3 w = B.omega[ma];
+  // The gap (da - ma_n . p) / mna - (db - mb_n . p) / mnb, as g0 - k . p: no division a point
+  // (and two a contact).
+  const double ia = 1.0 / mna, ib = 1.0 / mnb;
+  const double g0 = da * ia - db * ib;
+  const Vec3 k = ma_n * ia - mb_n * ib;
+  const Vec3 w = B.omega[ma], x = ba.position, v = ba.velocity;
   for (SubContact& s : c.subs) {
-    s.point += dt * (ba.velocity + w.cross(s.point - ba.position));
-    s.gap = g0 - k.dot(s.point);
+    Vec3& p = s.point;
+    const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
+    p.x() += dt * (v.x() + (w.y() * rz - w.z() * ry));
+    p.y() += dt * (v.y() + (w.z() * rx - w.x() * rz));
+    p.z() += dt * (v.z() + (w.x() * ry - w.y() * rx));
+    s.gap = g0 - (k.x() * p.x() + k.y() * p.y() + k.z() * p.z());
   }
 }
 }  // namespace
@@ -208,7 +215,6 @@ double joint_forces3(const Model& m, Contact3& c) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   const Vec3 n = c.normal;
-  const auto [t1, t2] = tangents(n);
   // The bodies that move the two pieces (a slave piece moves with its master).
   const auto ma_body = static_cast<size_t>(B.master[a]), mb_body = static_cast<size_t>(B.master[b]);
   const RigidBody3& ba = B.body[ma_body];
@@ -219,72 +225,97 @@ double joint_forces3(const Model& m, Contact3& c) {
   const double roundoff = m.roundoff_gap();
   const Vec3& wa = B.omega[ma_body];
   const Vec3& wb = B.omega[mb_body];
-  c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
-  c.force_mag = 0.0;
-  // Contact damping: the joint's area and the two bodies' effective mass, once per contact.
+  const bool deformable = B.deformable[a] || B.deformable[b];
+  const Vec3 xa = ba.position, xab = bb.position - xa;
+  // What the law needs of the contact as a whole, formed at its first sub-contact that is not
+  // open (many contacts have none: the head joints of a wall under gravity).
+  bool ready = false;
+  Vec3 t1, t2, u1, u2, un;
+  double c1 = 0.0, c2 = 0.0, cn = 0.0, area = 0.0, m_eff = 0.0;
   const bool damped = jp.normal_damping > 0.0 || jp.shear_damping > 0.0;
-  double area = 0.0, m_eff = 0.0;
-  if (damped) {
-    for (const SubContact& q : c.subs) area += q.area;
-    const auto inverse = [&](size_t k, const RigidBody3& body) {
-      return B.fixity[k] == kFix3All || body.mass <= 0.0 ? 0.0 : 1.0 / body.mass;
-    };
-    const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
-    m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
-  }
-  // Relative velocity of a over b at a point p, (va + wa x (p - xa)) - (vb + wb x (p - xb)),
-  // as v0 + dw x (p - xa): one cross product a sub-contact instead of two.
-  const Vec3 xab = bb.position - ba.position;
-  const Vec3 v0 = ba.velocity - bb.velocity + wb.cross(xab), dw = wa - wb;
+  const auto prepare = [&] {
+    std::tie(t1, t2) = tangents(n);
+    // Relative velocity of a over b at a point p, (va + wa x (p - xa)) - (vb + wb x (p - xb)),
+    // is v0 + dw x r with r = p - xa; its component along a unit vector t is
+    // v0 . t + r . (t x dw): per contact the two vectors, per sub-contact one dot product.
+    const Vec3 v0 = ba.velocity - bb.velocity + wb.cross(xab), dw = wa - wb;
+    c1 = v0.dot(t1), c2 = v0.dot(t2), cn = v0.dot(n);
+    u1 = t1.cross(dw), u2 = t2.cross(dw), un = n.cross(dw);
+    // Contact damping: the joint's area and the two bodies' effective mass.
+    if (damped) {
+      for (const SubContact& q : c.subs) area += q.area;
+      const auto inverse = [&](size_t k, const RigidBody3& body) {
+        return B.fixity[k] == kFix3All || body.mass <= 0.0 ? 0.0 : 1.0 / body.mass;
+      };
+      const double inv = inverse(ma_body, ba) + inverse(mb_body, bb);
+      m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
+    }
+    ready = true;
+  };
+  // Sums over the sub-contacts: force on a, its moment about a's centroid, |Fn| + |Fs|.
+  Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+  double load = 0.0;
   double deepest = 0.0, fastest = 0.0;
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
     const double overlap = without_roundoff(-s.gap + s.closure, roundoff);
-    const double un = overlap + s.dilation;
-    if (stays_open(un, s.fn, s.flags)) {
-      s.fs = Vec3::Zero(), s.un_prev = un, s.force = Vec3::Zero();
+    const double un_now = overlap + s.dilation;
+    if (stays_open(un_now, s.fn, s.flags)) {
+      s.fs = Vec3::Zero(), s.un_prev = un_now, s.force = Vec3::Zero();
       if (s.link >= 0)
         fastest = std::max(fastest,
                            (side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1)).squaredNorm());
       continue;
     }
-    // Last cycle's shear force turned into the plane, its magnitude kept.
-    // (Skipped while the plane has not turned enough to matter: the usual case at rest.)
-    Vec3 fs = s.fs;
-    const double off = fs.dot(n), fs2 = fs.squaredNorm();
-    if (off * off > 1e-24 * fs2) {
-      fs -= off * n;
-      fs *= std::sqrt(fs2 / fs.squaredNorm());
+    if (!ready) prepare();
+    const Vec3 ra = s.point - xa;
+    // The relative velocity in the plane's basis (n, t1, t2).
+    double vn, v1, v2;
+    if (s.link < 0) {
+      v1 = c1 + ra.dot(u1), v2 = c2 + ra.dot(u2);
+      vn = damped || deformable ? cn + ra.dot(un) : 0.0;
+    } else {
+      const Vec3 dv = side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1);
+      vn = dv.dot(n), v1 = dv.dot(t1), v2 = dv.dot(t2);
     }
-    const Vec3 ra = s.point - ba.position;
-    const Vec3 dv = s.link < 0 ? Vec3(v0 + dw.cross(ra))
-                               : Vec3(side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1));
-    fastest = std::max(fastest, dv.squaredNorm());
-    JointState st{s.fn,    fs.dot(t1), s.un_prev, s.dilation, s.sd1,
-                  s.flags, fs.dot(t2), s.sd2,     s.plastic};
-    joint_update<false>(jp, s.area, overlap, dv.dot(t1) * dt, dv.dot(t2) * dt, st);
+    if (deformable) fastest = std::max(fastest, vn * vn + v1 * v1 + v2 * v2);
+    // Last cycle's shear force in the plane's basis; if the plane has turned enough to matter
+    // (not the usual case at rest), turned into it with its magnitude kept.
+    double f1 = s.fs.dot(t1), f2 = s.fs.dot(t2);
+    const double off = s.fs.dot(n);
+    if (off != 0.0) {
+      const double in2 = f1 * f1 + f2 * f2, all2 = in2 + off * off;
+      if (off * off > 1e-24 * all2 && in2 > 0.0) {
+        const double scale = std::sqrt(all2 / in2);
+        f1 *= scale, f2 *= scale;
+      }
+    }
+    JointState st{s.fn, f1, s.un_prev, s.dilation, s.sd1, s.flags, f2, s.sd2, s.plastic};
+    joint_update<false>(jp, s.area, overlap, v1 * dt, v2 * dt, st);
     s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
     s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags, s.plastic = st.plastic;
     s.fs = st.fs * t1 + st.fs2 * t2;
+    // The force on a, with the dashpots' share.
     s.force = st.fn * n + s.fs;
     if (damped && (st.flags & kTouching)) {
-      const Dashpot d = contact_dashpot(jp, s.area, s.area / area, m_eff, -dv.dot(n), dv.dot(t1),
-                                        dv.dot(t2), st.flags & kSlipping);
+      const Dashpot d =
+          contact_dashpot(jp, s.area, s.area / area, m_eff, -vn, v1, v2, st.flags & kSlipping);
       s.force += d.fn * n + d.fs * t1 + d.fs2 * t2;
     }
-    c.force += s.force;
-    c.torque_a += ra.cross(s.force);
-    c.force_mag += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
+    force += s.force;
+    torque += ra.cross(s.force);
+    load += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
   }
+  c.force = force, c.torque_a = torque, c.force_mag = load;
   // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).
-  c.torque_b = xab.cross(c.force) - c.torque_a;
+  c.torque_b = ready ? Vec3(xab.cross(c.force) - c.torque_a) : Vec3::Zero();
   // How far any point of one block may have moved against the other this step (translation
   // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
   // hundredth of the tolerance.
   // A deformable block's nodes move on their own: the fastest sub-contact counts as well.
   c.drift += dt * ((ba.velocity - bb.velocity).norm() + wa.norm() * B.bound_radius[a] +
                    wb.norm() * B.bound_radius[b]);
-  if (B.deformable[a] || B.deformable[b]) c.drift += dt * std::sqrt(fastest);
+  if (deformable) c.drift += dt * std::sqrt(fastest);
   return deepest;
 }
 
