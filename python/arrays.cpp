@@ -190,8 +190,10 @@ const Spec kContacts[] = {
      "shear force: 2D (n,) N/m (view); 3D (n, 3) world vector on the first block (copy)",
      [](const Model& m, py::handle o) {
        if (m.dim != 3) return whole(m.contacts.fs, o);
-       return per_contact3<3>(m, [](const SubContact& s, auto& sum) {
-         for (int k = 0; k < 3; ++k) sum[k] += s.fs[k];
+       return copy<double>(m.contacts3.size(), 3, [&](size_t i, double* row) {
+         Vec3 sum = Vec3::Zero();
+         for (const SubContact& s : m.contacts3[i].subs) sum += shear_force(m.contacts3[i], s);
+         for (int k = 0; k < 3; ++k) row[k] = sum[k];
        });
      }},
     {"normal", "unit normal from the second block towards the first (n, dim) (view)",
@@ -256,8 +258,9 @@ const Spec kSubContacts[] = {
      }},
     {"shear_force", "shear force on the first block (n, 3), N (copy)",
      [](const Model& m, py::handle) {
-       return per_sub<double, 3>(m, [](uint32_t, const SubContact& s, double* r) {
-         for (int k = 0; k < 3; ++k) r[k] = s.fs[k];
+       return per_sub<double, 3>(m, [&](uint32_t i, const SubContact& s, double* r) {
+         const Vec3 f = shear_force(m.contacts3[i], s);
+         for (int k = 0; k < 3; ++k) r[k] = f[k];
        });
      }},
     {"gap", "gap (n,), m (copy)",

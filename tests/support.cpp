@@ -66,7 +66,8 @@ uint64_t state_hash(const Model& m) {
     mix(h, b.position.data(), 24), mix(h, b.velocity.data(), 24), mix(h, b.momentum.data(), 24),
         mix(h, b.orientation.coeffs().data(), 32);
   for (const Contact3& c : m.contacts3)
-    for (const SubContact& s : c.subs) mix(h, &s.fn, sizeof s.fn), mix(h, s.fs.data(), 24);
+    for (const SubContact& s : c.subs)
+      mix(h, &s.fn, sizeof s.fn), mix(h, &s.fs, 8), mix(h, &s.fs2, 8);
   mix(h, &m.time, sizeof m.time);
   return h;
 }

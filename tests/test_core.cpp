@@ -395,7 +395,7 @@ class TestCore : public QObject {
         const auto at = [&](uint32_t b) {
           return Vec3(B.body[b].velocity + B.omega[b].cross(s.point - B.body[b].position));
         };
-        const Vec3 dv = at(c.a) - at(c.b), dash = s.force - s.fn * n - s.fs;
+        const Vec3 dv = at(c.a) - at(c.b), dash = s.force - s.fn * n - shear_force(c, s);
         const double share = s.area / area;
         const double cn = 2 * jp.normal_damping * std::sqrt(jp.kn * s.area * m_eff * share);
         const double cs = 2 * jp.shear_damping * std::sqrt(jp.ks * s.area * m_eff * share);
@@ -407,6 +407,46 @@ class TestCore : public QObject {
       }
     }
     QCOMPARE(checked, 4);
+  }
+
+  // A 3D sub-contact's shear force is kept in a tangent basis that turns with the plane: when the
+  // plane turns by a small angle, the force turns with it (to second order in the angle), keeps
+  // its magnitude and stays in the plane, whatever the plane's orientation.
+  void shearForceTurnsWithThePlane() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+        "joint define j kn=1e9 ks=1e9 friction=45\njoint assign j\n"
+        "block box -1,-1,-1 2,2,0 material=rock\nfix block=1\n"
+        "block box 0,0,-0.0001 1,1,0.9999 material=rock\nstep 1\n");
+    Model& m = r.model();
+    Blocks3& B = m.blocks3;
+    B.body[1].velocity.setZero(), B.omega[1].setZero();  // no shear increment: only the turn
+    QCOMPARE(m.contacts3.size(), size_t(1));
+    Contact3& c = m.contacts3[0];
+    // A plane of no special orientation, with some tangent in it, and a shear force in it.
+    const Vec3 n0 = Vec3(1, 2, 3).normalized();
+    c.normal = n0, c.t1 = n0.cross(Vec3(0.6, -0.8, 0)).normalized();
+    for (SubContact& s : c.subs) s.fs = 300.0, s.fs2 = -200.0;
+    joint_forces3(m, c);
+    std::vector<Vec3> before;
+    for (const SubContact& s : c.subs) before.push_back(shear_force(c, s));
+    // Turned by a thousandth of a radian about a line in the plane.
+    const double angle = 1e-3;
+    const Eigen::AngleAxisd turn(angle, n0.cross(Vec3(0, 0, 1)).normalized());
+    c.normal = turn * n0;
+    joint_forces3(m, c);
+    QCOMPARE(before.size(), size_t(4));
+    for (size_t k = 0; k < c.subs.size(); ++k) {
+      const SubContact& s = c.subs[k];
+      QVERIFY(s.flags & kTouching);
+      const Vec3 now = shear_force(c, s), want = turn * before[k];
+      const double size = before[k].norm();
+      QVERIFY(size > 300.0);
+      QVERIFY(std::abs(now.norm() - size) <= 1e-12 * size);
+      QVERIFY(std::abs(now.dot(c.normal)) <= 1e-12 * size);
+      QVERIFY((now - want).norm() <= 2 * angle * angle * size);
+    }
   }
 
   // Every stage is timed into the model's profile, the joint law as 'interfaces' in 3D too; 3D

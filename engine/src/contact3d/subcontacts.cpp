@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include "contact3d/face_overlap.hpp"
 #include "core/coulomb_law.hpp"
@@ -32,9 +31,8 @@ void carry_state(const Model& m, const Contact3& c, SubContact& s,
   }
   const SubContact& o = old[static_cast<size_t>(match)];
   used[static_cast<size_t>(match)] = 1;
-  s.fn = o.fn, s.un_prev = o.un_prev, s.dilation = o.dilation;
-  s.sd1 = o.sd1, s.sd2 = o.sd2, s.fs = o.fs, s.flags = o.flags, s.closure = o.closure;
-  s.plastic = o.plastic;
+  static_cast<JointState&>(s) = o;
+  s.closure = o.closure;
 }
 
 namespace {
@@ -134,18 +132,39 @@ void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   }
 }
 
+// The plane's normal is now n: the first tangent becomes the old one projected onto the plane (or
+// any tangent, if none or if the plane has turned too far for that), and each sub-contact's shear
+// force, turned into the plane with its magnitude kept, is written in the new basis.
+void turn_shear_basis(Contact3& c, const Vec3& n) {
+  const Vec3 t1 = c.t1, t2 = c.normal.cross(t1);
+  Vec3 u1 = t1 - t1.dot(n) * n;
+  u1 = u1.squaredNorm() > 0.25 ? Vec3(u1.normalized()) : tangents(n).first;
+  const Vec3 u2 = n.cross(u1);
+  for (SubContact& s : c.subs) {
+    if (s.fs == 0.0 && s.fs2 == 0.0) continue;
+    Vec3 f = s.fs * t1 + s.fs2 * t2;
+    const double size2 = f.squaredNorm();
+    f -= f.dot(n) * n;
+    if (f.squaredNorm() > 0.0) f *= std::sqrt(size2 / f.squaredNorm());
+    s.fs = f.dot(u1), s.fs2 = f.dot(u2);
+  }
+  c.t1 = u1, c.normal = n;
+}
+
 void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   const Vec3 n = fit.normal;
   const double lo_a = fit.lo_a, hi_b = fit.hi_b;
-  c.normal = n, c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
+  c.gap = lo_a - hi_b, c.offset = 0.5 * (lo_a + hi_b);
   c.face_a = facing_face(B, a, -n, -lo_a, c.face_a);
   c.face_b = facing_face(B, b, n, hi_b, c.face_b);
   if (B.deformable[a] || B.deformable[b])
     rebuild_node_subcontacts(m, c, n);
   else
     corner_subcontacts(m, c, n);
+  // The shear carried over, in the basis of the plane as it is now.
+  turn_shear_basis(c, n);
   const double tol = m.tolerance();
   // Contact type from the vertices of each block within the tolerance of the plane.
   int near_a = 0, near_b = 0;
@@ -161,6 +180,9 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
 // between the two facing faces' planes along the plane's normal.
 void follow(const Model& m, Contact3& c, const Vec3& n) {
   const Blocks3& B = m.blocks3;
+  // A turn of the plane beyond a hundredth of a radian in a step (as when its candidate changes)
+  // re-expresses the shear at once; the law keeps the tangent in the plane through smaller ones.
+  if (c.normal.dot(n) < 0.99995) turn_shear_basis(c, n);
   if (B.deformable[c.a] || B.deformable[c.b]) return follow_node_subcontacts(m, c, n);
   const auto ma = static_cast<size_t>(B.master[c.a]);
   const RigidBody3& ba = B.body[ma];
@@ -234,7 +256,10 @@ double joint_forces3(const Model& m, Contact3& c) {
   double c1 = 0.0, c2 = 0.0, cn = 0.0, area = 0.0, m_eff = 0.0;
   const bool damped = jp.normal_damping > 0.0 || jp.shear_damping > 0.0;
   const auto prepare = [&] {
-    std::tie(t1, t2) = tangents(n);
+    // The shear's basis kept in the plane as it turns (see contacts3.hpp).
+    t1 = c.t1 - c.t1.dot(n) * n;
+    t1 = t1.squaredNorm() > 0.25 ? Vec3(t1.normalized()) : tangents(n).first;
+    c.t1 = t1, t2 = n.cross(t1);
     // Relative velocity of a over b at a point p, (va + wa x (p - xa)) - (vb + wb x (p - xb)),
     // is v0 + dw x r with r = p - xa; its component along a unit vector t is
     // v0 . t + r . (t x dw): per contact the two vectors, per sub-contact one dot product.
@@ -261,7 +286,7 @@ double joint_forces3(const Model& m, Contact3& c) {
     const double overlap = without_roundoff(-s.gap + s.closure, roundoff);
     const double un_now = overlap + s.dilation;
     if (stays_open(un_now, s.fn, s.flags)) {
-      s.fs = Vec3::Zero(), s.un_prev = un_now, s.force = Vec3::Zero();
+      s.fs = 0.0, s.fs2 = 0.0, s.un_prev = un_now, s.force = Vec3::Zero();
       if (s.link >= 0)
         fastest = std::max(fastest,
                            (side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1)).squaredNorm());
@@ -279,32 +304,18 @@ double joint_forces3(const Model& m, Contact3& c) {
       vn = dv.dot(n), v1 = dv.dot(t1), v2 = dv.dot(t2);
     }
     if (deformable) fastest = std::max(fastest, vn * vn + v1 * v1 + v2 * v2);
-    // Last cycle's shear force in the plane's basis; if the plane has turned enough to matter
-    // (not the usual case at rest), turned into it with its magnitude kept.
-    double f1 = s.fs.dot(t1), f2 = s.fs.dot(t2);
-    const double off = s.fs.dot(n);
-    if (off != 0.0) {
-      const double in2 = f1 * f1 + f2 * f2, all2 = in2 + off * off;
-      if (off * off > 1e-24 * all2 && in2 > 0.0) {
-        const double scale = std::sqrt(all2 / in2);
-        f1 *= scale, f2 *= scale;
-      }
-    }
-    JointState st{s.fn, f1, s.un_prev, s.dilation, s.sd1, s.flags, f2, s.sd2, s.plastic};
-    joint_update<false>(jp, s.area, overlap, v1 * dt, v2 * dt, st);
-    s.fn = st.fn, s.un_prev = st.un_prev, s.dilation = st.dilation;
-    s.sd1 = st.shear_disp, s.sd2 = st.shear_disp2, s.flags = st.flags, s.plastic = st.plastic;
-    s.fs = st.fs * t1 + st.fs2 * t2;
+    joint_update<false>(jp, s.area, overlap, v1 * dt, v2 * dt, s);
     // The force on a, with the dashpots' share.
-    s.force = st.fn * n + s.fs;
-    if (damped && (st.flags & kTouching)) {
+    double pn = s.fn, p1 = s.fs, p2 = s.fs2;
+    if (damped && (s.flags & kTouching)) {
       const Dashpot d =
-          contact_dashpot(jp, s.area, s.area / area, m_eff, -vn, v1, v2, st.flags & kSlipping);
-      s.force += d.fn * n + d.fs * t1 + d.fs2 * t2;
+          contact_dashpot(jp, s.area, s.area / area, m_eff, -vn, v1, v2, s.flags & kSlipping);
+      pn += d.fn, p1 += d.fs, p2 += d.fs2;
     }
+    s.force = pn * n + p1 * t1 + p2 * t2;
     force += s.force;
     torque += ra.cross(s.force);
-    load += std::abs(st.fn) + std::sqrt(st.fs * st.fs + st.fs2 * st.fs2);
+    load += std::abs(s.fn) + std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
   }
   c.force = force, c.torque_a = torque, c.force_mag = load;
   // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).

@@ -36,7 +36,8 @@ size_t preload_contacts3(Model& m, const StressField& field) {
       if (normal <= 0.0) continue;
       s.closure = jp.impl->closure(jp, normal) + s.gap;
       s.un_prev = s.dilation, s.fn = 0.0;
-      s.fs = s.area * (-sn - normal * n);
+      const Vec3 shear = s.area * (-sn - normal * n);
+      s.fs = shear.dot(c.t1), s.fs2 = shear.dot(n.cross(c.t1));
       any = true;
     }
     loaded += any;

@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 19;
+constexpr uint32_t kVersion = 20;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 // Sub-contacts and their node links are written as their bytes: a change of either's layout
 // changes the file, and kVersion with it.
@@ -28,8 +28,9 @@ static_assert(sizeof(SubContact) == 160 && sizeof(NodeLink) == 48);
 // must be the same file every time).
 template <class F>
 void members(const SubContact& s, F f) {
-  f(s.key), f(s.point), f(s.area), f(s.gap), f(s.fn), f(s.un_prev), f(s.dilation), f(s.sd1);
-  f(s.sd2), f(s.fs), f(s.flags), f(s.plastic), f(s.force), f(s.link), f(s.closure);
+  f(s.fn), f(s.fs), f(s.un_prev), f(s.dilation), f(s.shear_disp), f(s.flags), f(s.fs2);
+  f(s.shear_disp2), f(s.plastic), f(s.key), f(s.point), f(s.area), f(s.gap), f(s.closure);
+  f(s.force), f(s.link);
 }
 template <class F>
 void members(const NodeLink& l, F f) {
@@ -257,7 +258,7 @@ void fields(IO& io, auto& m) {
   for (auto& c : m.contacts3) {
     io.pod(c.a), io.pod(c.b), io.pod(c.joint), io.pod(c.tag), io.pod(c.kind), io.pod(c.ia);
     io.pod(c.ib), io.pod(c.face_a), io.pod(c.face_b), io.pod(c.type);
-    for (int k = 0; k < 3; ++k) io.pod(c.normal[k]);
+    for (int k = 0; k < 3; ++k) io.pod(c.normal[k]), io.pod(c.t1[k]);
     io.pod(c.offset), io.pod(c.gap), io.vec(c.subs), io.vec(c.nodes);
     for (int k = 0; k < 3; ++k) io.pod(c.force[k]), io.pod(c.torque_a[k]), io.pod(c.torque_b[k]);
     io.pod(c.force_mag), io.pod(c.drift);

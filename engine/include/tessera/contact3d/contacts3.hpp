@@ -36,8 +36,11 @@
 // surface triangle it meets on a deformable one) along the normal. Where both blocks are
 // deformable both sets act with half the area each: the same total stiffness and force.
 //
-// The shear force is a vector in the CP, kept in world coordinates and turned with the plane each
-// cycle (its magnitude kept); the joint law sees it in the plane's two tangent directions.
+// The shear force is a vector in the CP, kept as its two components in a tangent basis of the
+// plane that turns with it: each cycle a touching contact projects its first tangent onto the
+// plane as it now is (the least turn that keeps it in the plane, so the force neither twists
+// about the normal nor changes magnitude); a rebuild that moves the plane re-expresses the
+// forces in the new basis. The joint law's state is the sub-contact's own (no copy a cycle).
 #pragma once
 
 #include <array>
@@ -45,6 +48,7 @@
 #include <vector>
 
 #include "tessera/contact3d/polyhedron.hpp"
+#include "tessera/core/joint_law.hpp"
 
 namespace tessera {
 
@@ -64,20 +68,17 @@ struct NodeLink {
   Vec3 weight = Vec3::Zero();
 };
 
-// 160 bytes: what the cycle reads and writes at a corner of the overlap or at a node.
-struct SubContact {
+// 160 bytes: what the cycle reads and writes at a corner of the overlap or at a node. Its joint
+// law state (JointState: normal force, compression positive; shear force on a and total shear
+// displacement as components along the contact's t1 and t2; normal displacement of the last
+// cycle; dilation; flags; plastic shear travel) is the law's argument itself.
+struct SubContact : JointState {
   uint64_t key = 0;
   Vec3 point = Vec3::Zero();  // on the common plane
   double area = 0.0, gap = 0.0;
-  // Joint law state: normal force (compression positive), world shear force on a, normal
-  // displacement of the last cycle, dilation, total shear displacement (two components).
-  double fn = 0.0, un_prev = 0.0, dilation = 0.0, sd1 = 0.0, sd2 = 0.0;
-  double closure = 0.0;  // in-situ closure sigma_n / kn added to the overlap (as 2D's)
-  double plastic = 0.0;  // plastic shear displacement travelled (law=cy, barton-bandis)
-  Vec3 fs = Vec3::Zero();
+  double closure = 0.0;       // in-situ closure sigma_n / kn added to the overlap (as 2D's)
   Vec3 force = Vec3::Zero();  // on a this cycle
   int32_t link = -1;          // its node in the contact's `nodes`; -1 at a corner of rigid faces
-  uint8_t flags = 0;
 };
 
 struct Contact3 {
@@ -91,6 +92,9 @@ struct Contact3 {
   uint32_t face_a = 0, face_b = 0;
   uint8_t type = kFaceFace;
   Vec3 normal = Vec3::UnitZ();
+  // The plane's first tangent, in which the sub-contacts' shear is kept (t2 = normal x t1); zero
+  // until the first rebuild sets it.
+  Vec3 t1 = Vec3::Zero();
   double offset = 0.0, gap = 0.0;  // plane: normal . x = offset (at the last rebuild)
   // Relative motion of the blocks since the sub-contacts were last rebuilt (bounded at their
   // reach); a new contact starts due.
@@ -103,5 +107,10 @@ struct Contact3 {
   Vec3 force = Vec3::Zero(), torque_a = Vec3::Zero(), torque_b = Vec3::Zero();
   double force_mag = 0.0;
 };
+
+// A sub-contact's shear force on a, in world axes.
+inline Vec3 shear_force(const Contact3& c, const SubContact& s) {
+  return s.fs * c.t1 + s.fs2 * c.normal.cross(c.t1);
+}
 
 }  // namespace tessera
