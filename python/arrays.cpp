@@ -163,7 +163,7 @@ template <size_t K, class F>
 py::array per_contact3(const Model& m, F&& value) {
   return copy<double>(m.contacts3.size(), K, [&](size_t i, double* row) {
     std::array<double, K == 0 ? 1 : K> sum{};
-    for (const SubContact& s : m.contacts3[i].subs) value(s, sum);
+    for (const SubContact& s : m.contacts3[i].subs) value(m.contacts3[i], s, sum);
     std::copy(sum.begin(), sum.end(), row);
   });
 }
@@ -184,16 +184,16 @@ const Spec kContacts[] = {
     {"normal_force", "normal force (n,), compression positive; 2D N/m (view), 3D N summed (copy)",
      [](const Model& m, py::handle o) {
        if (m.dim != 3) return whole(m.contacts.fn, o);
-       return per_contact3<0>(m, [](const SubContact& s, auto& sum) { sum[0] += s.fn; });
+       return per_contact3<0>(
+           m, [](const Contact3&, const SubContact& s, auto& sum) { sum[0] += s.fn; });
      }},
     {"shear_force",
      "shear force: 2D (n,) N/m (view); 3D (n, 3) world vector on the first block (copy)",
      [](const Model& m, py::handle o) {
        if (m.dim != 3) return whole(m.contacts.fs, o);
-       return copy<double>(m.contacts3.size(), 3, [&](size_t i, double* row) {
-         Vec3 sum = Vec3::Zero();
-         for (const SubContact& s : m.contacts3[i].subs) sum += shear_force(m.contacts3[i], s);
-         for (int k = 0; k < 3; ++k) row[k] = sum[k];
+       return per_contact3<3>(m, [](const Contact3& c, const SubContact& s, auto& sum) {
+         const Vec3 f = shear_force(c, s);
+         for (int k = 0; k < 3; ++k) sum[k] += f[k];
        });
      }},
     {"normal", "unit normal from the second block towards the first (n, dim) (view)",

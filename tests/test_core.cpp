@@ -62,6 +62,17 @@ std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
+// A 1 m cube pressed 0.1 mm into a fixed slab (3D), after one cycle: one contact with four
+// touching sub-contacts, on a joint of kn = ks = 1e9 Pa/m, friction 45 degrees and `extra`.
+void cube_pressed_into_slab(ScriptRun& r, const std::string& extra) {
+  r.run(
+      "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+      "joint define j kn=1e9 ks=1e9 friction=45" +
+      extra +
+      "\njoint assign j\n"
+      "block box -1,-1,-1 2,2,0 material=rock\nfix block=1\n"
+      "block box 0,0,-0.0001 1,1,0.9999 material=rock\nstep 1\n");
+}
 }  // namespace
 
 class TestCore : public QObject {
@@ -374,11 +385,7 @@ class TestCore : public QObject {
   // vb - wb x (p - xb)), normal and in-plane, for a cube that moves and turns on a fixed slab.
   void subContactVelocityFromBothBodies() {
     ScriptRun r;
-    r.run(
-        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
-        "joint define j kn=1e9 ks=1e9 friction=45 ndamping=0.3 sdamping=0.2\njoint assign j\n"
-        "block box -1,-1,-1 2,2,0 material=rock\nfix block=1\n"
-        "block box 0,0,-0.0001 1,1,0.9999 material=rock\nstep 1\n");
+    cube_pressed_into_slab(r, " ndamping=0.3 sdamping=0.2");
     Model& m = r.model();
     Blocks3& B = m.blocks3;
     B.body[1].velocity = Vec3(0.02, -0.03, -0.05), B.omega[1] = Vec3(0.05, 0.03, 0.02);
@@ -414,11 +421,7 @@ class TestCore : public QObject {
   // its magnitude and stays in the plane, whatever the plane's orientation.
   void shearForceTurnsWithThePlane() {
     ScriptRun r;
-    r.run(
-        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
-        "joint define j kn=1e9 ks=1e9 friction=45\njoint assign j\n"
-        "block box -1,-1,-1 2,2,0 material=rock\nfix block=1\n"
-        "block box 0,0,-0.0001 1,1,0.9999 material=rock\nstep 1\n");
+    cube_pressed_into_slab(r, "");
     Model& m = r.model();
     Blocks3& B = m.blocks3;
     B.body[1].velocity.setZero(), B.omega[1].setZero();  // no shear increment: only the turn

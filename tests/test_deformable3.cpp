@@ -216,7 +216,7 @@ class TestDeformable3 : public QObject {
     QVERIFY(std::abs(start) < 0.02 * std::abs(full));
     double fn = 0, fs = 0, area = 0;
     for (const Contact3& c : preloaded.model().contacts3)
-      for (const SubContact& s : c.subs) fn += s.fn, fs += std::hypot(s.fs, s.fs2), area += s.area;
+      for (const SubContact& s : c.subs) fn += s.fn, fs += s.shear(), area += s.area;
     qInfo("joint tractions: normal %.4e, shear %.4e Pa over %.3f m2", fn / area, fs / area, area);
     QVERIFY(std::abs(area / (36 / std::cos(M_PI / 6)) - 1) < 1e-4);
     QVERIFY(std::abs(fn / area / 8.75e6 - 1) < 0.03);
@@ -671,7 +671,7 @@ class TestDeformable3 : public QObject {
     for (const Contact3& c : b.contacts3)
       if (c.a != 0 && c.b != 0)
         for (const SubContact& sub : c.subs)
-          slip3 += sub.area * std::hypot(sub.shear_disp, sub.shear_disp2), area += sub.area;
+          slip3 += sub.area * sub.shear_travel(), area += sub.area;
     slip2 /= length, slip3 /= area;
     qInfo("%zu triangles, %zu tetrahedra; %llu and %llu cycles; joint %.4f m long, %.4f m2",
           a.continuum.zone_count(), b.continuum3.zone_count(),

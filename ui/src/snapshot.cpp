@@ -310,9 +310,8 @@ void copy_blocks3(const Model& m, Snapshot& s) {
       o.a = static_cast<int>(c.a), o.b = static_cast<int>(c.b);
       o.point3 = sub.point, o.normal3 = c.normal;
       o.point = o.from = o.to = Vec2(sub.point.x(), sub.point.y());
-      o.length = 0.5 * std::sqrt(sub.area), o.gap = sub.gap, o.fn = sub.fn,
-      o.fs = std::hypot(sub.fs, sub.fs2);
-      o.shear_disp = std::hypot(sub.shear_disp, sub.shear_disp2), o.flags = sub.flags;
+      o.length = 0.5 * std::sqrt(sub.area), o.gap = sub.gap, o.fn = sub.fn, o.fs = sub.shear();
+      o.shear_disp = sub.shear_travel(), o.flags = sub.flags;
       if (c.joint < m.joints.size()) o.joint = m.joints[c.joint].name;
       if (c.tag >= 0 && static_cast<size_t>(c.tag) < m.joint_tags.size())
         o.joint_set = m.joint_tags[static_cast<size_t>(c.tag)];

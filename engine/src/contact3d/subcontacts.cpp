@@ -132,14 +132,18 @@ void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
   }
 }
 
-// The plane's normal is now n: the first tangent becomes the old one projected onto the plane (or
-// any tangent, if none or if the plane has turned too far for that), and each sub-contact's shear
-// force, turned into the plane with its magnitude kept, is written in the new basis.
+// Tangent t moved into the plane of normal n by the least turn (or any tangent, if t is none or
+// the plane has turned too far from it for that).
+Vec3 in_plane_tangent(const Vec3& t, const Vec3& n) {
+  const Vec3 u = t - t.dot(n) * n;
+  return u.squaredNorm() > 0.25 ? Vec3(u.normalized()) : tangents(n).first;
+}
+
+// The plane's normal is now n: the first tangent moves into the plane, and each sub-contact's
+// shear force, turned into the plane with its magnitude kept, is written in the new basis.
 void turn_shear_basis(Contact3& c, const Vec3& n) {
-  const Vec3 t1 = c.t1, t2 = c.normal.cross(t1);
-  Vec3 u1 = t1 - t1.dot(n) * n;
-  u1 = u1.squaredNorm() > 0.25 ? Vec3(u1.normalized()) : tangents(n).first;
-  const Vec3 u2 = n.cross(u1);
+  const Vec3 t1 = c.t1, t2 = c.t2();
+  const Vec3 u1 = in_plane_tangent(t1, n), u2 = n.cross(u1);
   for (SubContact& s : c.subs) {
     if (s.fs == 0.0 && s.fs2 == 0.0) continue;
     Vec3 f = s.fs * t1 + s.fs2 * t2;
@@ -257,9 +261,7 @@ double joint_forces3(const Model& m, Contact3& c) {
   const bool damped = jp.normal_damping > 0.0 || jp.shear_damping > 0.0;
   const auto prepare = [&] {
     // The shear's basis kept in the plane as it turns (see contacts3.hpp).
-    t1 = c.t1 - c.t1.dot(n) * n;
-    t1 = t1.squaredNorm() > 0.25 ? Vec3(t1.normalized()) : tangents(n).first;
-    c.t1 = t1, t2 = n.cross(t1);
+    c.t1 = t1 = in_plane_tangent(c.t1, n), t2 = n.cross(t1);
     // Relative velocity of a over b at a point p, (va + wa x (p - xa)) - (vb + wb x (p - xb)),
     // is v0 + dw x r with r = p - xa; its component along a unit vector t is
     // v0 . t + r . (t x dw): per contact the two vectors, per sub-contact one dot product.
@@ -315,7 +317,7 @@ double joint_forces3(const Model& m, Contact3& c) {
     s.force = pn * n + p1 * t1 + p2 * t2;
     force += s.force;
     torque += ra.cross(s.force);
-    load += std::abs(s.fn) + std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
+    load += std::abs(s.fn) + s.shear();
   }
   c.force = force, c.torque_a = torque, c.force_mag = load;
   // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).

@@ -37,7 +37,7 @@ size_t preload_contacts3(Model& m, const StressField& field) {
       s.closure = jp.impl->closure(jp, normal) + s.gap;
       s.un_prev = s.dilation, s.fn = 0.0;
       const Vec3 shear = s.area * (-sn - normal * n);
-      s.fs = shear.dot(c.t1), s.fs2 = shear.dot(n.cross(c.t1));
+      s.fs = shear.dot(c.t1), s.fs2 = shear.dot(c.t2());
       any = true;
     }
     loaded += any;

@@ -285,14 +285,14 @@ void write_contacts3(const Model& m, const std::string& path) {
     return subs[i]->area > 0 ? f / subs[i]->area : 0.0;
   };
   array(out, "Float64", "normal_force", 1, n, [&](size_t i) { return subs[i]->fn; });
-  const auto shear = [&](size_t i) { return std::hypot(subs[i]->fs, subs[i]->fs2); };
+  const auto shear = [&](size_t i) { return subs[i]->shear(); };
   array(out, "Float64", "shear_force", 1, n, shear);
   array(out, "Float64", "normal_stress", 1, n, [&](size_t i) { return per_area(subs[i]->fn, i); });
   array(out, "Float64", "shear_stress", 1, n, [&](size_t i) { return per_area(shear(i), i); });
   array(out, "Float64", "opening", 1, n, [&](size_t i) { return subs[i]->gap; });
   array(out, "Float64", "area", 1, n, [&](size_t i) { return subs[i]->area; });
   array(out, "Float64", "shear_displacement", 1, n,
-        [&](size_t i) { return std::hypot(subs[i]->shear_disp, subs[i]->shear_disp2); });
+        [&](size_t i) { return subs[i]->shear_travel(); });
   array(out, "Float64", "dilation", 1, n, [&](size_t i) { return subs[i]->dilation; });
   array(out, "Float64", "plastic_shear", 1, n, [&](size_t i) { return subs[i]->plastic; });
   array(out, "Int32", "state", 1, n, [&](size_t i) { return contact_state_code(subs[i]->flags); });

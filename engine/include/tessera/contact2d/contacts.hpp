@@ -79,11 +79,11 @@ struct Contacts {
   // Normal and shear force on block a this cycle, dashpot included (compression positive).
   double total_fn(size_t i) const { return damp_fn.empty() ? fn[i] : fn[i] + damp_fn[i]; }
   double total_fs(size_t i) const { return damp_fs.empty() ? fs[i] : fs[i] + damp_fs[i]; }
-  // Force on block a (block b takes the opposite) from its normal and shear force and the unit
-  // normal: formed from the law's forces rather than kept (24 bytes a contact).
   // -1 when `flip`, else +1, as arithmetic: which side of a pair a contact or block is on
   // varies unpredictably, and a branch on it is mispredicted.
   static double side_sign(bool flip) { return 1.0 - 2.0 * static_cast<double>(flip); }
+  // Force on block a (block b takes the opposite) from its normal and shear force and the unit
+  // normal: formed from the law's forces rather than kept (24 bytes a contact).
   static Vec2 force_of(double total_fn, double total_fs, const Vec2& n) {
     return total_fn * n + total_fs * perp(n);
   }

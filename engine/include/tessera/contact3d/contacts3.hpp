@@ -95,6 +95,7 @@ struct Contact3 {
   // The plane's first tangent, in which the sub-contacts' shear is kept (t2 = normal x t1); zero
   // until the first rebuild sets it.
   Vec3 t1 = Vec3::Zero();
+  Vec3 t2() const { return normal.cross(t1); }
   double offset = 0.0, gap = 0.0;  // plane: normal . x = offset (at the last rebuild)
   // Relative motion of the blocks since the sub-contacts were last rebuilt (bounded at their
   // reach); a new contact starts due.
@@ -110,7 +111,7 @@ struct Contact3 {
 
 // A sub-contact's shear force on a, in world axes.
 inline Vec3 shear_force(const Contact3& c, const SubContact& s) {
-  return s.fs * c.t1 + s.fs2 * c.normal.cross(c.t1);
+  return s.fs * c.t1 + s.fs2 * c.t2();
 }
 
 }  // namespace tessera

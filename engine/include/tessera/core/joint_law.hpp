@@ -10,6 +10,7 @@
 // value kn L un, so it cannot drift from the overlap.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -90,6 +91,11 @@ struct JointState {
   double fs2 = 0.0, shear_disp2 = 0.0;
   // Plastic shear displacement travelled (law=cy and barton-bandis: their strength's history).
   double plastic = 0.0;
+  // Magnitudes of the shear force and of the total shear displacement.
+  double shear() const { return std::sqrt(fs * fs + fs2 * fs2); }
+  double shear_travel() const {
+    return std::sqrt(shear_disp * shear_disp + shear_disp2 * shear_disp2);
+  }
 };
 
 class JointLaw {
