@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "bindings.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
 #include "tessera/core/history.hpp"
 
 namespace tessera::python {
@@ -244,8 +245,9 @@ const Spec kSubContacts[] = {
      }},
     {"point", "point on the common plane (n, 3), m (copy)",
      [](const Model& m, py::handle) {
-       return per_sub<double, 3>(m, [](uint32_t, const SubContact& s, double* r) {
-         for (int k = 0; k < 3; ++k) r[k] = s.point[k];
+       return per_sub<double, 3>(m, [&m](uint32_t i, const SubContact& s, double* r) {
+         const Vec3 x = world_point(m.blocks3, m.contacts3[i], s);
+         for (int k = 0; k < 3; ++k) r[k] = x[k];
        });
      }},
     {"area", "area (n,), m^2 (copy)",

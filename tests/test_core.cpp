@@ -400,7 +400,8 @@ class TestCore : public QObject {
       for (const SubContact& s : c.subs) {
         if (!(s.flags & kTouching)) continue;
         const auto at = [&](uint32_t b) {
-          return Vec3(B.body[b].velocity + B.omega[b].cross(s.point - B.body[b].position));
+          return Vec3(B.body[b].velocity +
+                      B.omega[b].cross(world_point(B, c, s) - B.body[b].position));
         };
         const Vec3 dv = at(c.a) - at(c.b), dash = s.force - s.fn * n - shear_force(c, s);
         const double share = s.area / area;
@@ -414,6 +415,74 @@ class TestCore : public QObject {
       }
     }
     QCOMPARE(checked, 4);
+  }
+
+  // A 3D sub-contact's point is kept in the frame of block a's body and rides on it; between
+  // rebuilds its gap is measured there between the two faces' planes. Both blocks moved and
+  // turned by a finite step (a's about an axis of no special direction), the followed gap at each
+  // point is the one measured directly between the faces' new planes along the new normal.
+  void followedGapMeasuredAtThePointOnA() {
+    ScriptRun r;
+    cube_pressed_into_slab(r, "");
+    Model& m = r.model();
+    Blocks3& B = m.blocks3;
+    const auto move = [&](size_t b, const Vec3& shift, const Vec3& axis, double angle) {
+      RigidBody3& body = B.body[b];
+      body.position += shift;
+      body.orientation =
+          Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized())) * body.orientation;
+      B.update_world(b);
+    };
+    move(0, Vec3(1e-4, -2e-4, 5e-5), Vec3(1, 2, 3), 2e-3);
+    move(1, Vec3(-1e-4, 1e-4, -1e-4), Vec3(-2, 1, 1), 1e-3);
+    int checked = 0;
+    for (Contact3& c : m.contacts3) {
+      c.drift = 0.0;  // follow, no rebuild
+      update_plane3(m, c);
+      const Vec3 n = c.normal;
+      const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
+      for (const SubContact& s : c.subs) {
+        const Vec3 p = world_point(B, c, s);
+        const double gap = (B.world_offset[c.face_a] - ma.dot(p)) / ma.dot(n) -
+                           (B.world_offset[c.face_b] - mb.dot(p)) / mb.dot(n);
+        QVERIFY(std::abs(s.gap - gap) < 1e-12);
+        ++checked;
+      }
+    }
+    QCOMPARE(checked, 4);
+  }
+
+  // A join gives the joined pieces a new body and frame: every other contact's sub-contact points
+  // stay where they were (blocks 2 and 3 side by side on a slab, block 4 across both).
+  void joinKeepsSubContactPoints() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+        "joint define j kn=1e9 ks=1e9 friction=45\njoint assign j\n"
+        "block box -1,-1,-1 3,2,0 material=rock\nfix block=1\n"
+        "block box 0,0,-0.0001 1,1,0.9999 material=rock\n"
+        "block box 1,0,-0.0001 2,1,0.9999 material=rock\n"
+        "block box 0.5,0,0.9998 1.5,1,1.9998 material=rock\n"
+        "gravity 0 0 -10\nstep 20\n");
+    Model& m = r.model();
+    const auto points = [&](bool skip_joined) {
+      std::vector<Vec3> at;
+      for (const Contact3& c : m.contacts3)
+        if (!(skip_joined && c.a == 1 && c.b == 2))
+          for (const SubContact& s : c.subs) at.push_back(world_point(m.blocks3, c, s));
+      return at;
+    };
+    // Blocks 2 and 3 are the a of the contacts with block 4.
+    int riding = 0;
+    for (const Contact3& c : m.contacts3) riding += (c.a == 1 || c.a == 2) && c.b == 3;
+    QCOMPARE(riding, 2);
+    const std::vector<Vec3> before = points(true);
+    r.run("join block=2,3\n");
+    QCOMPARE(m.blocks3.master[2], 1);  // block 3 moves with block 2's new body
+    const std::vector<Vec3> after = points(false);
+    QCOMPARE(after.size(), before.size());
+    QVERIFY(after.size() >= 12);
+    for (size_t i = 0; i < after.size(); ++i) QVERIFY((after[i] - before[i]).norm() < 1e-12);
   }
 
   // A 3D sub-contact's shear force is kept in a tangent basis that turns with the plane: when the

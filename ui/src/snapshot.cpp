@@ -8,6 +8,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "tessera/contact3d/subcontacts.hpp"
 #include "tessera/core/block_loads.hpp"
 #include "tessera/core/model.hpp"
 #include "tessera/script/script.hpp"
@@ -308,8 +309,8 @@ void copy_blocks3(const Model& m, Snapshot& s) {
     for (const SubContact& sub : c.subs) {
       SnapshotContact o;
       o.a = static_cast<int>(c.a), o.b = static_cast<int>(c.b);
-      o.point3 = sub.point, o.normal3 = c.normal;
-      o.point = o.from = o.to = Vec2(sub.point.x(), sub.point.y());
+      o.point3 = world_point(m.blocks3, c, sub), o.normal3 = c.normal;
+      o.point = o.from = o.to = Vec2(o.point3.x(), o.point3.y());
       o.length = 0.5 * std::sqrt(sub.area), o.gap = sub.gap, o.fn = sub.fn, o.fs = sub.shear();
       o.shear_disp = sub.shear_travel(), o.flags = sub.flags;
       if (c.joint < m.joints.size()) o.joint = m.joints[c.joint].name;

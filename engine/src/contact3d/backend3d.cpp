@@ -27,9 +27,7 @@ void prepare3d(Model& m) {
                        " has no mass: give it a material with a density");
   // Angular velocities from the momenta (a script may have set either).
   for (size_t b = 0; b < B.size(); ++b)
-    m.blocks3.omega[b] = B.body[b].mass > 0.0 && B.fixity[b] != kFix3All
-                             ? B.body[b].angular_velocity()
-                             : B.fixed_w[b];
+    m.blocks3.omega[b] = B.body[b].mass > 0.0 && B.fixity[b] != kFix3All ? B.spin(b) : B.fixed_w[b];
   if (m.det_pos3.size() != B.size()) m.detection_due = true;
   if (m.block_contact_begin.size() != B.size() + 1) m.build_block_contacts();
 }
@@ -45,9 +43,9 @@ double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
   const SubContact* deepest = &c.subs.front();
   for (const SubContact& s : c.subs)
     if (s.gap < deepest->gap) deepest = &s;
+  const Vec3 x = world_point(m.blocks3, c, *deepest);
   std::ostringstream where;
-  where << "x=" << deepest->point.x() << ", y=" << deepest->point.y()
-        << ", z=" << deepest->point.z();
+  where << "x=" << x.x() << ", y=" << x.y() << ", z=" << x.z();
   throw_overlap(m, c.a, c.b, -deepest->gap, kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b),
                 where.str(), "a corner of the faces' overlap on their common plane");
 }
@@ -205,8 +203,9 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
         if (fix & kFix3Rot) t = Vec3::Zero(), body.momentum = Vec3::Zero();
         step_body(body, f, t, dt);
       }
-      B.omega[b] = body.mass > 0.0 && fix != kFix3All ? body.angular_velocity() : B.fixed_w[b];
       move_surface(m, B, b, refresh);
+      // (Through the rotation the face planes were just turned by.)
+      B.omega[b] = body.mass > 0.0 && fix != kFix3All ? B.spin(b) : B.fixed_w[b];
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
                      B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
       out.jump[b] =

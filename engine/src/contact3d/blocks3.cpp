@@ -14,7 +14,7 @@ namespace {
 // Copies block b of src onto the end of dst.
 void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
   dst.body.push_back(src.body[b]);
-  dst.omega.push_back(src.omega[b]);
+  dst.omega.push_back(src.omega[b]), dst.rotation.push_back(src.rotation[b]);
   dst.force.push_back(src.force[b]), dst.torque.push_back(src.torque[b]);
   dst.applied.push_back(src.applied[b]), dst.ref.push_back(src.ref[b]);
   dst.ref_q.push_back(src.ref_q[b]);
@@ -73,7 +73,7 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
   const size_t b = size_t(body.size());
   RigidBody3 rb = make_body(s, density);
   body.push_back(rb);
-  omega.push_back(Vec3::Zero());
+  omega.push_back(Vec3::Zero()), rotation.push_back(Mat3::Identity());
   force.push_back(Vec3::Zero()), torque.push_back(Vec3::Zero()), applied.push_back(0.0);
   ref.push_back(s.centroid), ref_q.push_back(rb.orientation);
   fixity.push_back(0), fixed_v.push_back(Vec3::Zero()), fixed_w.push_back(Vec3::Zero());
@@ -177,6 +177,7 @@ void Blocks3::update_planes(size_t b) {
   const RigidBody3& moving = body[static_cast<size_t>(master[b])];
   const Mat3 r = moving.orientation.toRotationMatrix();
   const Vec3 c = moving.position;
+  rotation[b] = r;
   // (Through pointers that alias nothing: the stores do not make the compiler reload the rest.)
   const uint32_t f0 = face_begin[b], f1 = face_begin[b + 1];
   const Vec3* __restrict ln = local_normal.data();
@@ -263,6 +264,7 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
     body[p].mass = 0.0, body[p].velocity = Vec3::Zero(), body[p].momentum = Vec3::Zero();
   }
   body[m0] = rb;
+  for (size_t p : pieces) rotation[p] = rb.orientation.toRotationMatrix();
   ref[m0] = centre, ref_q[m0] = rb.orientation;
   load_force[m0] = load, load_moment[m0] = load_m;
   for (size_t p : pieces) bound_radius[p] = reach;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "contact3d/face_overlap.hpp"
+#include "tessera/contact3d/subcontacts.hpp"
 
 namespace tessera {
 
@@ -62,7 +63,7 @@ void measure(const Model& m, const Contact3& c, const NodeLink& l, SubContact& s
   const double t = meet_opposite(m, c, l, n, x);
   // The node is on a (the plane's positive side) or on b.
   s.gap = l.side == 0 ? -t : t;
-  s.point = x + 0.5 * t * n;
+  s.local = frame_point(m.blocks3, c, x + 0.5 * t * n);
 }
 
 // Face f's corners projected on the plane, counter-clockwise about n.
@@ -179,7 +180,7 @@ Vec3 side_velocity(const Model& m, const Contact3& c, const SubContact& s, int s
   const uint32_t blk = side == 0 ? c.a : c.b;
   if (!B.deformable[blk]) {
     const auto mb = static_cast<size_t>(B.master[blk]);
-    return B.body[mb].velocity + B.omega[mb].cross(s.point - B.body[mb].position);
+    return B.body[mb].velocity + B.omega[mb].cross(world_point(B, c, s) - B.body[mb].position);
   }
   const std::vector<Vec3>& vel = m.continuum3.vel;
   const NodeLink& l = c.nodes[static_cast<size_t>(s.link)];

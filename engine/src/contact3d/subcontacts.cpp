@@ -19,7 +19,7 @@ void carry_state(const Model& m, const Contact3& c, SubContact& s,
     if (!used[o] && old[o].key == s.key) match = static_cast<int>(o);
   double best = m.tolerance();
   for (size_t o = 0; o < old.size() && match < 0; ++o) {
-    const double d = (old[o].point - s.point).norm();
+    const double d = (old[o].local - s.local).norm();
     if (!used[o] && d < best) best = d, match = static_cast<int>(o);
   }
   if (match < 0) {
@@ -123,9 +123,10 @@ void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
     s.key = w.poly[i].key;
     s.area = 0.25 * (std::abs(cross2(pp - centre, p - centre)) +
                      std::abs(cross2(p - centre, pn - centre)));
-    s.point = c.offset * n + p.x() * t1 + p.y() * t2;
+    const Vec3 x = c.offset * n + p.x() * t1 + p.y() * t2;
+    s.local = frame_point(B, c, x);
     // Heights of the two faces above the plane along n.
-    const double ha = (da - ma.dot(s.point)) / mna, hb = (db - mb.dot(s.point)) / mnb;
+    const double ha = (da - ma.dot(x)) / mna, hb = (db - mb.dot(x)) / mnb;
     s.gap = ha - hb;
     carry_state(m, c, s, w.old, used);
     c.subs.push_back(s);
@@ -180,34 +181,29 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   c.type = lo <= 1 ? kVertexFace : hi == 2 ? kEdgeEdge : lo == 2 ? kEdgeFace : kFaceFace;
 }
 
-// Between rebuilds: each sub-contact's point moves with block a, its gap is measured afresh
-// between the two facing faces' planes along the plane's normal.
+// Between rebuilds: each sub-contact's point rides on block a (in its frame), its gap is measured
+// afresh between the two facing faces' planes along the plane's normal.
 void follow(const Model& m, Contact3& c, const Vec3& n) {
   const Blocks3& B = m.blocks3;
   // A turn of the plane beyond a hundredth of a radian in a step (as when its candidate changes)
   // re-expresses the shear at once; the law keeps the tangent in the plane through smaller ones.
   if (c.normal.dot(n) < 0.99995) turn_shear_basis(c, n);
   if (B.deformable[c.a] || B.deformable[c.b]) return follow_node_subcontacts(m, c, n);
-  const auto ma = static_cast<size_t>(B.master[c.a]);
-  const RigidBody3& ba = B.body[ma];
+  const RigidBody3& ba = frame_body(B, c);
   const Vec3 ma_n = B.world_normal[c.face_a], mb_n = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
   const double mna = ma_n.dot(n), mnb = mb_n.dot(n);
-  const double dt = m.dt;
   c.normal = n;
-  // The gap (da - ma_n . p) / mna - (db - mb_n . p) / mnb, as g0 - k . p: no division a point
-  // (and two a contact).
+  // The gap (da - ma_n . p) / mna - (db - mb_n . p) / mnb at p = xa + R q (q the point in a's
+  // frame) is g0 - k . q: per point one dot product, per contact two divisions.
   const double ia = 1.0 / mna, ib = 1.0 / mnb;
-  const double g0 = da * ia - db * ib;
-  const Vec3 k = ma_n * ia - mb_n * ib;
-  const Vec3 w = B.omega[ma], x = ba.position, v = ba.velocity;
+  const Vec3 kw = ma_n * ia - mb_n * ib;
+  const double g0 = da * ia - db * ib - kw.dot(ba.position);
+  const Vec3 k = B.rotation[c.a].transpose() * kw;
+  const double kx = k.x(), ky = k.y(), kz = k.z();
   for (SubContact& s : c.subs) {
-    Vec3& p = s.point;
-    const double rx = p.x() - x.x(), ry = p.y() - x.y(), rz = p.z() - x.z();
-    p.x() += dt * (v.x() + (w.y() * rz - w.z() * ry));
-    p.y() += dt * (v.y() + (w.z() * rx - w.x() * rz));
-    p.z() += dt * (v.z() + (w.x() * ry - w.y() * rx));
-    s.gap = g0 - (k.x() * p.x() + k.y() * p.y() + k.z() * p.z());
+    const Vec3& q = s.local;
+    s.gap = g0 - (kx * q.x() + ky * q.y() + kz * q.z());
   }
 }
 }  // namespace
@@ -252,7 +248,9 @@ double joint_forces3(const Model& m, Contact3& c) {
   const Vec3& wa = B.omega[ma_body];
   const Vec3& wb = B.omega[mb_body];
   const bool deformable = B.deformable[a] || B.deformable[b];
-  const Vec3 xa = ba.position, xab = bb.position - xa;
+  const Vec3 xab = bb.position - ba.position;
+  // Sub-contact points q are kept in the frame of a's body: p - xa = R q.
+  const Mat3& rot = B.rotation[a];
   // What the law needs of the contact as a whole, formed at its first sub-contact that is not
   // open (many contacts have none: the head joints of a wall under gravity).
   bool ready = false;
@@ -295,7 +293,7 @@ double joint_forces3(const Model& m, Contact3& c) {
       continue;
     }
     if (!ready) prepare();
-    const Vec3 ra = s.point - xa;
+    const Vec3 ra = rot * s.local;
     // The relative velocity in the plane's basis (n, t1, t2).
     double vn, v1, v2;
     if (s.link < 0) {

@@ -16,11 +16,15 @@ void validate3d(const Model& m) {
   const Blocks3& B = m.blocks3;
   const size_t n = B.size();
   require(B.omega.size() == n && B.force.size() == n && B.fixity.size() == n &&
-              B.master.size() == n && B.id.size() == n && B.bound_radius.size() == n,
+              B.master.size() == n && B.id.size() == n && B.bound_radius.size() == n &&
+              B.rotation.size() == n,
           "block array sizes differ");
   require(B.vert_begin.size() == n + 1 && B.face_begin.size() == n + 1,
           "vertex or face offsets do not match the block count");
   for (size_t b = 0; b < n; ++b) {
+    const Eigen::Quaterniond& q = B.body[static_cast<size_t>(B.master[b])].orientation;
+    require((B.rotation[b] - q.toRotationMatrix()).cwiseAbs().maxCoeff() <= 1e-12, "block", B.id[b],
+            "has a rotation that is not its body's");
     require(B.vert_begin[b + 1] - B.vert_begin[b] >= 4, "block", B.id[b],
             "has fewer than 4 vertices");
     require(B.face_begin[b + 1] - B.face_begin[b] >= 4, "block", B.id[b], "has fewer than 4 faces");
@@ -43,7 +47,7 @@ void validate3d(const Model& m) {
     require(finite(c.force) && finite(c.torque_a) && finite(c.torque_b), "contact", i,
             "force is not finite");
     for (const SubContact& s : c.subs) {
-      require(finite(s.point) && std::isfinite(s.area) && s.area >= 0.0 && finite(s.force),
+      require(finite(s.local) && std::isfinite(s.area) && s.area >= 0.0 && finite(s.force),
               "contact", i, "has a sub-contact that is not finite");
       require(s.link >= -1 && s.link < static_cast<int64_t>(c.nodes.size()), "contact", i,
               "has a sub-contact whose node is not listed");

@@ -27,7 +27,7 @@ size_t preload_contacts3(Model& m, const StressField& field) {
     bool any = false;
     for (SubContact& s : c.subs) {
       if (s.gap > shut) continue;
-      const ZoneStress t = field.at(s.point.z());
+      const ZoneStress t = field.at(world_point(m.blocks3, c, s).z());
       // Traction on block a, whose outward normal is -n: -sigma n (compression positive).
       const Vec3 sn(t.xx * n.x() + t.xy * n.y() + t.xz * n.z(),
                     t.xy * n.x() + t.yy * n.y() + t.yz * n.z(),

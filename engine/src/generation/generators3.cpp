@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tessera/contact3d/subcontacts.hpp"
 #include "tessera/core/block_loads.hpp"
 #include "tessera/core/step.hpp"
 #include "tessera/zones/deformable3.hpp"
@@ -200,7 +201,15 @@ void join_blocks3(Model& m, const std::vector<size_t>& blocks) {
       throw std::invalid_argument("block " + std::to_string(B.id[b]) +
                                   " has no density: give it a material before joining");
   }
+  // Sub-contact points ride in the frame of block a's body, which the join changes: they cross
+  // it in world axes.
+  std::vector<Vec3> at;
+  for (const Contact3& c : m.contacts3)
+    for (const SubContact& s : c.subs) at.push_back(world_point(B, c, s));
   B.join(pieces, densities);
+  size_t k = 0;
+  for (Contact3& c : m.contacts3)
+    for (SubContact& s : c.subs) s.local = frame_point(B, c, at[k++]);
   // Contacts between pieces of the new body go; the rest are found again.
   std::vector<Contact3> kept;
   for (Contact3& c : m.contacts3)

@@ -17,7 +17,7 @@ namespace tessera {
 namespace {
 
 constexpr char kMagic[8] = {'T', 'E', 'S', 'S', 'E', 'R', 'A', '2'};
-constexpr uint32_t kVersion = 20;
+constexpr uint32_t kVersion = 21;
 static_assert(sizeof(Vec2) == 2 * sizeof(double));
 // Sub-contacts and their node links are written as their bytes: a change of either's layout
 // changes the file, and kVersion with it.
@@ -29,7 +29,7 @@ static_assert(sizeof(SubContact) == 160 && sizeof(NodeLink) == 48);
 template <class F>
 void members(const SubContact& s, F f) {
   f(s.fn), f(s.fs), f(s.un_prev), f(s.dilation), f(s.shear_disp), f(s.flags), f(s.fs2);
-  f(s.shear_disp2), f(s.plastic), f(s.key), f(s.point), f(s.area), f(s.gap), f(s.closure);
+  f(s.shear_disp2), f(s.plastic), f(s.key), f(s.local), f(s.area), f(s.gap), f(s.closure);
   f(s.force), f(s.link);
 }
 template <class F>
@@ -336,6 +336,10 @@ Model restore_state(const std::string& path) {
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
   update_deformable_world(m);
   update_deformable_world3(m);
+  auto& B3 = m.blocks3;
+  B3.rotation.resize(B3.size());
+  for (size_t b = 0; b < B3.size(); ++b)
+    B3.rotation[b] = B3.body[static_cast<size_t>(B3.master[b])].orientation.toRotationMatrix();
   m.build_block_contacts();
   return m;
 }

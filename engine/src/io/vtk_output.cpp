@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "tessera/contact3d/subcontacts.hpp"
+
 namespace tessera {
 
 namespace {
@@ -276,7 +278,7 @@ void write_contacts3(const Model& m, const std::string& path) {
     for (const SubContact& s : c.subs) subs.push_back(&s), of.push_back(&c);
   const size_t n = subs.size();
   std::ofstream out = open_file(path);
-  begin_piece(out, n, n, "Verts", [&](size_t i) { return subs[i]->point; });
+  begin_piece(out, n, n, "Verts", [&](size_t i) { return world_point(B, *of[i], *subs[i]); });
   out << "<Verts>\n";
   array(out, "Int64", "connectivity", 1, n, [](size_t k) { return k; });
   array(out, "Int64", "offsets", 1, n, [](size_t i) { return i + 1; });

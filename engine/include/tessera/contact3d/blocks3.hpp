@@ -51,6 +51,8 @@ struct Blocks3 {
   // Faces of block b are [face_begin[b], face_begin[b+1]); face f's vertices are
   // face_vert[fv_begin[f] .. fv_begin[f+1]) (global vertex indices, counter-clockwise outside).
   std::vector<uint32_t> face_begin{0}, fv_begin{0}, face_vert;
+  // Rotation of the block's moving body (its axes to world axes), refreshed with the face planes.
+  std::vector<Mat3> rotation;
   std::vector<Vec3> local_normal, world_normal;
   std::vector<double> local_offset;  // local_normal . x on the face plane (block frame)
   std::vector<double> world_offset;  // world_normal . x on the face plane
@@ -103,6 +105,12 @@ struct Blocks3 {
   // the mass-weighted velocity and no spin. Joined bodies may be joined again.
   void join(const std::vector<size_t>& pieces, const std::vector<double>& densities);
   bool is_slave(size_t b) const { return master[b] != static_cast<int32_t>(b); }
+  // World angular velocity of block b's body from its momentum, through its rotation:
+  // R (I^-1 (R^T L)) (the cycle's form, so that a run split in two steps as one).
+  Vec3 spin(size_t b) const {
+    const Mat3& r = rotation[b];
+    return r * (r.transpose() * body[b].momentum).cwiseQuotient(body[b].principal);
+  }
   // Held still or at a prescribed velocity as a whole (a deformable block moves with its nodes).
   bool held(size_t b) const { return fixity[b] == kFix3All && !deformable[b]; }
   // Whether a world point lies inside block b (on the surface counts).

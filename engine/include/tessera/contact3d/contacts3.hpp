@@ -25,8 +25,9 @@
 // Rebuilding the overlap polygon is most of a contact's cost, so it is done when the blocks have
 // moved against each other by a hundredth of the contact tolerance since the last rebuild (every
 // cycle for a sliding or rocking block, seldom in a settling wall); in between each sub-contact
-// rides on block a and its gap is measured afresh between the two faces' current planes, and the
-// plane's normal is the candidate face's current normal.
+// rides on block a (its point is kept in the frame of a's body) and its gap is measured afresh
+// between the two faces' current planes, and the plane's normal is the candidate face's current
+// normal.
 //
 // Deformable blocks (§5.3.2). A face of a deformable block touches as its surface nodes: each
 // surface triangle of the facing face is clipped by the other face on the plane, and the clipped
@@ -74,7 +75,9 @@ struct NodeLink {
 // cycle; dilation; flags; plastic shear travel) is the law's argument itself.
 struct SubContact : JointState {
   uint64_t key = 0;
-  Vec3 point = Vec3::Zero();  // on the common plane
+  // Its point on the common plane in the frame of a's moving body (about its centroid, in its
+  // axes): between rebuilds it rides on a with no update. world_point() gives it in world axes.
+  Vec3 local = Vec3::Zero();
   double area = 0.0, gap = 0.0;
   double closure = 0.0;       // in-situ closure sigma_n / kn added to the overlap (as 2D's)
   Vec3 force = Vec3::Zero();  // on a this cycle

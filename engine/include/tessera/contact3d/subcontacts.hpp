@@ -6,6 +6,18 @@
 
 namespace tessera {
 
+// The moving body of a contact's block a: its sub-contacts' points are kept in its frame.
+inline const RigidBody3& frame_body(const Blocks3& B, const Contact3& c) {
+  return B.body[static_cast<size_t>(B.master[c.a])];
+}
+// A sub-contact's point in world axes, and a world point in the frame of a's moving body.
+inline Vec3 world_point(const Blocks3& B, const Contact3& c, const SubContact& s) {
+  return frame_body(B, c).position + B.rotation[c.a] * s.local;
+}
+inline Vec3 frame_point(const Blocks3& B, const Contact3& c, const Vec3& x) {
+  return B.rotation[c.a].transpose() * (x - frame_body(B, c).position);
+}
+
 // Moves a contact's common plane with its blocks and rebuilds or follows its sub-contacts.
 void update_plane3(const Model& m, Contact3& c);
 // Whether update_plane3 will only follow the plane of a face, reading the blocks' face planes
