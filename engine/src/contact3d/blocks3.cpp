@@ -174,9 +174,8 @@ void Blocks3::update_world(size_t b) {
 }
 
 void Blocks3::update_planes(size_t b) {
-  const RigidBody3& moving = body[static_cast<size_t>(master[b])];
-  const Mat3 r = moving.orientation.toRotationMatrix();
-  const Vec3 c = moving.position;
+  const Mat3 r = body_rotation(b);
+  const Vec3 c = body[static_cast<size_t>(master[b])].position;
   rotation[b] = r;
   // (Through pointers that alias nothing: the stores do not make the compiler reload the rest.)
   const uint32_t f0 = face_begin[b], f1 = face_begin[b + 1];
@@ -192,9 +191,8 @@ void Blocks3::update_planes(size_t b) {
 }
 
 void Blocks3::update_vertices(size_t b) const {
-  const RigidBody3& moving = body[static_cast<size_t>(master[b])];
-  const Mat3 r = moving.orientation.toRotationMatrix();
-  const Vec3& c = moving.position;
+  const Mat3& r = rotation[b];  // (refreshed with the face planes, which come first)
+  const Vec3& c = body[static_cast<size_t>(master[b])].position;
   for (uint32_t v = vert_begin[b]; v < vert_begin[b + 1]; ++v)
     world_vertex[v] = c + r * local_vertex[v];
   for (uint32_t d = dir_begin[b]; d < dir_begin[b + 1]; ++d) world_dir[d] = r * local_dir[d];
@@ -264,7 +262,7 @@ void Blocks3::join(const std::vector<size_t>& pieces, const std::vector<double>&
     body[p].mass = 0.0, body[p].velocity = Vec3::Zero(), body[p].momentum = Vec3::Zero();
   }
   body[m0] = rb;
-  for (size_t p : pieces) rotation[p] = rb.orientation.toRotationMatrix();
+  for (size_t p : pieces) rotation[p] = body_rotation(p);
   ref[m0] = centre, ref_q[m0] = rb.orientation;
   load_force[m0] = load, load_moment[m0] = load_m;
   for (size_t p : pieces) bound_radius[p] = reach;

@@ -22,8 +22,7 @@ void validate3d(const Model& m) {
   require(B.vert_begin.size() == n + 1 && B.face_begin.size() == n + 1,
           "vertex or face offsets do not match the block count");
   for (size_t b = 0; b < n; ++b) {
-    const Eigen::Quaterniond& q = B.body[static_cast<size_t>(B.master[b])].orientation;
-    require((B.rotation[b] - q.toRotationMatrix()).cwiseAbs().maxCoeff() <= 1e-12, "block", B.id[b],
+    require((B.rotation[b] - B.body_rotation(b)).cwiseAbs().maxCoeff() <= 1e-12, "block", B.id[b],
             "has a rotation that is not its body's");
     require(B.vert_begin[b + 1] - B.vert_begin[b] >= 4, "block", B.id[b],
             "has fewer than 4 vertices");

@@ -334,12 +334,11 @@ Model restore_state(const std::string& path) {
   m.blocks.world_arc_centre.resize(m.blocks.local_vertex.size());
   m.blocks.world_edge_dir.resize(m.blocks.local_vertex.size());
   for (size_t b = 0; b < m.blocks.size(); ++b) m.blocks.update_world(b);
-  update_deformable_world(m);
-  update_deformable_world3(m);
   auto& B3 = m.blocks3;
   B3.rotation.resize(B3.size());
-  for (size_t b = 0; b < B3.size(); ++b)
-    B3.rotation[b] = B3.body[static_cast<size_t>(B3.master[b])].orientation.toRotationMatrix();
+  for (size_t b = 0; b < B3.size(); ++b) B3.rotation[b] = B3.body_rotation(b);
+  update_deformable_world(m);
+  update_deformable_world3(m);
   m.build_block_contacts();
   return m;
 }

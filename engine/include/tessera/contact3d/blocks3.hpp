@@ -105,6 +105,10 @@ struct Blocks3 {
   // the mass-weighted velocity and no spin. Joined bodies may be joined again.
   void join(const std::vector<size_t>& pieces, const std::vector<double>& densities);
   bool is_slave(size_t b) const { return master[b] != static_cast<int32_t>(b); }
+  // The rotation of block b's moving body, from its orientation (what `rotation` keeps).
+  Mat3 body_rotation(size_t b) const {
+    return body[static_cast<size_t>(master[b])].orientation.toRotationMatrix();
+  }
   // World angular velocity of block b's body from its momentum, through its rotation:
   // R (I^-1 (R^T L)) (the cycle's form, so that a run split in two steps as one).
   Vec3 spin(size_t b) const {
