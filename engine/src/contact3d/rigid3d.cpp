@@ -29,8 +29,8 @@ namespace {
 // The exact flow of the kinetic energy about principal axis k for time h: the body turns about
 // that axis at the rate pi_k / I_k (pi: the angular momentum in the body frame); the world
 // angular momentum does not change, so pi turns the other way in the body frame.
-void rotate_about(RigidBody3& b, Vec3& pi, int k, double h) {
-  const double half = 0.5 * h * pi[k] / b.principal[k];
+void rotate_about(RigidBody3& b, Vec3& pi, const Vec3& inv_moment, int k, double h) {
+  const double half = 0.5 * h * inv_moment[k] * pi[k];
   // cos and sin of the half angle; below 1e-4 rad their series are exact in double precision.
   const double h2 = half * half;
   const double c = h2 < 1e-8 ? 1.0 - 0.5 * h2 + h2 * h2 / 24.0 : std::cos(half);
@@ -55,8 +55,10 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) 
   // orientation, then the free rotation with the new momentum (a half kick on each side of the
   // rotation would apply each torque a step late, and the lag feeds energy into rocking).
   b.momentum += dt * torque;
+  // (Reciprocals first: the turns multiply, off the chain of divisions a step would otherwise be.)
+  const Vec3 inv = b.principal.cwiseInverse();
   Vec3 pi = b.orientation.conjugate() * b.momentum;
-  const Vec3 turn = dt * pi.cwiseQuotient(b.principal);  // body-frame rotation vector
+  const Vec3 turn = dt * pi.cwiseProduct(inv);  // body-frame rotation vector
   if (turn.cwiseAbs().maxCoeff() < 1e-8) {
     // Below 1e-8 rad a step, the composition differs from one rotation by the rotation vector
     // by less than round-off (its error is of the order of the angle squared).
@@ -65,13 +67,20 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) 
     b.orientation = Eigen::Quaterniond(q.w() - q.vec().dot(h), v.x(), v.y(), v.z());
   } else {
     // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
-    rotate_about(b, pi, 0, 0.5 * dt);
-    rotate_about(b, pi, 1, 0.5 * dt);
-    rotate_about(b, pi, 2, dt);
-    rotate_about(b, pi, 1, 0.5 * dt);
-    rotate_about(b, pi, 0, 0.5 * dt);
+    rotate_about(b, pi, inv, 0, 0.5 * dt);
+    rotate_about(b, pi, inv, 1, 0.5 * dt);
+    rotate_about(b, pi, inv, 2, dt);
+    rotate_about(b, pi, inv, 1, 0.5 * dt);
+    rotate_about(b, pi, inv, 0, 0.5 * dt);
   }
-  b.orientation.normalize();
+  // Back to unit length: a step leaves it off by round-off only, so one Newton step for 1/|q|
+  // (error of the order of that round-off squared) instead of a square root and a division; an
+  // orientation given off unit length (a script's, a file's) is normalised in full.
+  const double q2 = b.orientation.squaredNorm();
+  if (std::abs(q2 - 1.0) < 1e-6)
+    b.orientation.coeffs() *= 1.5 - 0.5 * q2;
+  else
+    b.orientation.normalize();
   if (b.mass > 0) b.velocity += dt * force / b.mass;
   b.position += dt * b.velocity;
 }

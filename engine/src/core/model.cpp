@@ -42,10 +42,6 @@ std::string Model::block_label(size_t b) const {
          (g >= 0 ? groups[static_cast<size_t>(g)] : std::string("(none)")) + ")";
 }
 
-double Model::tolerance() const {
-  return settings.contact_tolerance > 0.0 ? settings.contact_tolerance : settings.rounding;
-}
-
 }  // namespace tessera
 
 namespace tessera {

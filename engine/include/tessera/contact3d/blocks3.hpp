@@ -113,7 +113,7 @@ struct Blocks3 {
   // R (I^-1 (R^T L)) (the cycle's form, so that a run split in two steps as one).
   Vec3 spin(size_t b) const {
     const Mat3& r = rotation[b];
-    return r * (r.transpose() * body[b].momentum).cwiseQuotient(body[b].principal);
+    return r * (r.transpose() * body[b].momentum).cwiseProduct(body[b].principal.cwiseInverse());
   }
   // Held still or at a prescribed velocity as a whole (a deformable block moves with its nodes).
   bool held(size_t b) const { return fixity[b] == kFix3All && !deformable[b]; }

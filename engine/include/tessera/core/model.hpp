@@ -137,7 +137,9 @@ struct Model {
   // "block 12 (group rock)", for messages ("(group (none))" without one).
   std::string block_label(size_t b) const;
   // Contact tolerance in force: the user's, or the rounding length.
-  double tolerance() const;
+  double tolerance() const {
+    return settings.contact_tolerance > 0.0 ? settings.contact_tolerance : settings.rounding;
+  }
   // Gaps this close to zero are round-off of the coordinates, not openings (see joint_law.hpp).
   double roundoff_gap() const { return 1e-9 * tolerance(); }
   // Contacts found at assembly this close (or closer) are shut joints and may be bonded.
