@@ -53,6 +53,13 @@ double max_contact_depth3(const Blocks3& B, uint32_t a, uint32_t b) {
 // Each contact's plane and sub-contacts moved with its blocks, then the joint law at its
 // sub-contacts: one pass over the sub-contacts, which are most of the cycle's memory.
 void joint_forces3d(Model& m) {
+  // Each block's spin times its reach, once for all its contacts' drift.
+  const Blocks3& B = m.blocks3;
+  std::vector<double> turn_speed(B.size());
+  parallel_for(B.size(), [&](size_t b0, size_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+      turn_speed[b] = B.omega[static_cast<size_t>(B.master[b])].norm() * B.bound_radius[b];
+  });
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
   parallel_for(
@@ -61,7 +68,7 @@ void joint_forces3d(Model& m) {
         for (size_t i = c0; i < c1; ++i) {
           Contact3& c = m.contacts3[i];
           update_plane3(m, c);
-          const double deepest = joint_forces3(m, c);
+          const double deepest = joint_forces3(m, c, turn_speed.data());
           if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b))
             too_deep.flag(static_cast<uint32_t>(i));
         }

@@ -233,7 +233,7 @@ void update_plane3(const Model& m, Contact3& c) {
   }
 }
 
-double joint_forces3(const Model& m, Contact3& c) {
+double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   const Vec3 n = c.normal;
@@ -324,8 +324,9 @@ double joint_forces3(const Model& m, Contact3& c) {
   // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
   // hundredth of the tolerance.
   // A deformable block's nodes move on their own: the fastest sub-contact counts as well.
-  c.drift += dt * ((ba.velocity - bb.velocity).norm() + wa.norm() * B.bound_radius[a] +
-                   wb.norm() * B.bound_radius[b]);
+  const double turn_a = turn_speed ? turn_speed[a] : wa.norm() * B.bound_radius[a];
+  const double turn_b = turn_speed ? turn_speed[b] : wb.norm() * B.bound_radius[b];
+  c.drift += dt * ((ba.velocity - bb.velocity).norm() + turn_a + turn_b);
   if (deformable) c.drift += dt * std::sqrt(fastest);
   return deepest;
 }
