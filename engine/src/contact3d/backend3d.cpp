@@ -177,7 +177,9 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
       out.moves[b] = body.mass > 0.0 && (fix & 7) != 7;
       out.applied[b] = out.moves[b] ? B.applied[b] : 0.0;
       if (B.is_slave(b)) continue;  // moved with its master below
-      if (body.mass <= 0.0 || fix == kFix3All) {
+      const bool moving = body.mass > 0.0 && fix != kFix3All;
+      const Vec3 inv_moment = moving ? Vec3(body.principal.cwiseInverse()) : Vec3::Zero();
+      if (!moving) {
         // Held: moves at its prescribed velocity.
         body.velocity = B.fixed_v[b];
         body.momentum = Vec3::Zero();
@@ -208,11 +210,11 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
         for (int k = 0; k < 3; ++k)
           if (fix & (1 << k)) f[k] = 0.0, body.velocity[k] = B.fixed_v[b][k];
         if (fix & kFix3Rot) t = Vec3::Zero(), body.momentum = Vec3::Zero();
-        step_body(body, f, t, dt);
+        step_body(body, f, t, dt, inv_moment);
       }
       move_surface(m, B, b, refresh);
       // (Through the rotation the face planes were just turned by.)
-      B.omega[b] = body.mass > 0.0 && fix != kFix3All ? B.spin(b) : B.fixed_w[b];
+      B.omega[b] = moving ? B.spin(b, inv_moment) : B.fixed_w[b];
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
                      B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
       out.jump[b] =

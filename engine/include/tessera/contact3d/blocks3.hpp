@@ -111,9 +111,11 @@ struct Blocks3 {
   }
   // World angular velocity of block b's body from its momentum, through its rotation:
   // R (I^-1 (R^T L)) (the cycle's form, so that a run split in two steps as one).
-  Vec3 spin(size_t b) const {
+  Vec3 spin(size_t b) const { return spin(b, body[b].principal.cwiseInverse()); }
+  // (inv_moment: the principal moments' reciprocals, if the caller has them.)
+  Vec3 spin(size_t b, const Vec3& inv_moment) const {
     const Mat3& r = rotation[b];
-    return r * (r.transpose() * body[b].momentum).cwiseProduct(body[b].principal.cwiseInverse());
+    return r * (r.transpose() * body[b].momentum).cwiseProduct(inv_moment);
   }
   // Held still or at a prescribed velocity as a whole (a deformable block moves with its nodes).
   bool held(size_t b) const { return fixity[b] == kFix3All && !deformable[b]; }

@@ -29,7 +29,12 @@ RigidBody3 make_body(const SolidProperties& s, double density);
 
 // One step of dt under a force and a torque (world frame, about the centroid) at the present
 // position: leapfrog, with velocity and angular momentum at half steps - a torque kick, then
-// the free rotation; a force kick, then translation.
-void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt);
+// the free rotation; a force kick, then translation. inv_moment: the principal moments'
+// reciprocals (formed by a caller that needs them as well).
+void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt,
+               const Vec3& inv_moment);
+inline void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt) {
+  step_body(b, force, torque, dt, b.principal.cwiseInverse());
+}
 
 }  // namespace tessera
