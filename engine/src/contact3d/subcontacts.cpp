@@ -304,7 +304,7 @@ double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
       vn = dv.dot(n), v1 = dv.dot(t1), v2 = dv.dot(t2);
     }
     if (deformable) fastest = std::max(fastest, vn * vn + v1 * v1 + v2 * v2);
-    joint_update<false>(jp, s.area, overlap, v1 * dt, v2 * dt, s);
+    const double shear = joint_update<false>(jp, s.area, overlap, v1 * dt, v2 * dt, s);
     // The force on a, with the dashpots' share.
     double pn = s.fn, p1 = s.fs, p2 = s.fs2;
     if (damped && (s.flags & kTouching)) {
@@ -315,7 +315,7 @@ double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
     s.force = pn * n + p1 * t1 + p2 * t2;
     force += s.force;
     torque += ra.cross(s.force);
-    load += std::abs(s.fn) + s.shear();
+    load += std::abs(s.fn) + shear;
   }
   c.force = force, c.torque_a = torque, c.force_mag = load;
   // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).

@@ -17,9 +17,11 @@ const JointLaw& coulomb_law(bool residual);
 // residual, a residual cohesion and friction after a shear failure), dilation while slipping
 // (up to an optional shear displacement). Plane: one shear component (2D); the general form with
 // dus2 = 0 and fs2 = 0 gives the same numbers, this one skips the second component's arithmetic.
+// Returns the shear force's magnitude after the update (s.shear(), bit for bit: the caller that
+// sums it need not take the square root again).
 template <bool Plane>
-inline void coulomb_update(const JointProperties& p, bool residual_law, double L, double overlap,
-                           double dus, double dus2, JointState& s) {
+inline double coulomb_update(const JointProperties& p, bool residual_law, double L, double overlap,
+                             double dus, double dus2, JointState& s) {
   const bool bonded = s.flags & kBonded;
   s.flags &= static_cast<uint8_t>(~(kSlipping | kTouching));
   const double un = overlap + s.dilation;
@@ -28,7 +30,7 @@ inline void coulomb_update(const JointProperties& p, bool residual_law, double L
   // Open and unbonded: no force, and shear history is forgotten.
   if (!bonded && un <= 0.0) {
     s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
-    return;
+    return 0.0;
   }
   s.flags |= kTouching;
   // Incremental normal force, held between zero (or the bond) and the total-form value.
@@ -42,7 +44,7 @@ inline void coulomb_update(const JointProperties& p, bool residual_law, double L
   if (bonded && s.fn < -p.tension * L) {
     s.flags = static_cast<uint8_t>((s.flags & ~(kBonded | kTouching)) | kBroken);
     s.fn = 0.0, s.fs = 0.0, s.fs2 = 0.0;
-    return;
+    return 0.0;
   }
   s.fs -= p.ks * L * dus;
   s.shear_disp += dus;
@@ -50,7 +52,8 @@ inline void coulomb_update(const JointProperties& p, bool residual_law, double L
     s.fs2 -= p.ks * L * dus2;
     s.shear_disp2 += dus2;
   }
-  // Shear magnitude (the 2D form has one component and stays exact).
+  // Shear magnitude (the 2D form has one component and stays exact; with fs2 = 0 the square root
+  // of fs^2 is |fs| exactly, so the value is s.shear()'s).
   const bool plane = Plane || s.fs2 == 0.0;
   const double mag = plane ? std::abs(s.fs) : std::sqrt(s.fs * s.fs + s.fs2 * s.fs2);
   // The strength: a bond's peak; a failed one's residual (coulomb-residual); else friction.
@@ -80,17 +83,20 @@ inline void coulomb_update(const JointProperties& p, bool residual_law, double L
     if (p.tan_dilation > 0.0 && (p.dilation_limit <= 0.0 || travel < p.dilation_limit))
       s.dilation += p.tan_dilation *
                     (Plane || dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2));
+    return s.shear();
   }
+  return mag;
 }
 
 // The law of joint set p on one contact: the Coulomb laws inline, any other through its class.
+// Returns the shear force's magnitude after the update (s.shear()).
 template <bool Plane>
-inline void joint_update(const JointProperties& p, double size, double overlap, double dus,
-                         double dus2, JointState& s) {
+inline double joint_update(const JointProperties& p, double size, double overlap, double dus,
+                           double dus2, JointState& s) {
   if (p.inline_coulomb >= 0)
-    coulomb_update<Plane>(p, p.inline_coulomb == 1, size, overlap, dus, dus2, s);
-  else
-    p.impl->update(p, size, overlap, dus, dus2, s);
+    return coulomb_update<Plane>(p, p.inline_coulomb == 1, size, overlap, dus, dus2, s);
+  p.impl->update(p, size, overlap, dus, dus2, s);
+  return s.shear();
 }
 
 }  // namespace tessera
