@@ -62,6 +62,8 @@ void joint_forces3d(Model& m) {
   });
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
+  const double refresh = plane_refresh_drift(m);
+  m.reads_vertices3.resize(m.contacts3.size());
   parallel_for(
       m.contacts3.size(),
       [&](size_t c0, size_t c1) {
@@ -69,6 +71,7 @@ void joint_forces3d(Model& m) {
           Contact3& c = m.contacts3[i];
           update_plane3(m, c);
           const double deepest = joint_forces3(m, c, turn_speed.data());
+          m.reads_vertices3[i] = !follows_face_plane(c, refresh);
           if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b))
             too_deep.flag(static_cast<uint32_t>(i));
         }
@@ -149,17 +152,18 @@ double turned(const Eigen::Quaterniond& q0, const Eigen::Quaterniond& q1) {
 }
 
 // Whether a contact of block b will re-fit its plane or rebuild its sub-contacts when the next
-// cycle moves it (update_plane3), reading b's vertices and edge directions.
-bool vertices_read(const Model& m, size_t b, double refresh) {
+// cycle moves it (update_plane3), reading b's vertices and edge directions (as this cycle's law
+// found).
+bool vertices_read(const Model& m, size_t b) {
   for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k)
-    if (!follows_face_plane(m.contacts3[m.block_contacts[k] >> 1], refresh)) return true;
+    if (m.reads_vertices3[m.block_contacts[k] >> 1]) return true;
   return false;
 }
 
 // The block's face planes follow its body every cycle, its vertices only if a contact reads them.
-void move_surface(const Model& m, Blocks3& B, size_t b, double refresh) {
+void move_surface(const Model& m, Blocks3& B, size_t b) {
   B.update_planes(b);
-  if (vertices_read(m, b, refresh)) B.update_vertices(b);
+  if (vertices_read(m, b)) B.update_vertices(b);
 }
 
 void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
@@ -167,7 +171,6 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   const double dt = m.dt;
   const auto& S = m.block_scale;
   const size_t n = B.size();
-  const double refresh = plane_refresh_drift(m);
   out.reset(n);
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
@@ -212,7 +215,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
         if (fix & kFix3Rot) t = Vec3::Zero(), body.momentum = Vec3::Zero();
         step_body(body, f, t, dt, inv_moment);
       }
-      move_surface(m, B, b, refresh);
+      move_surface(m, B, b);
       // (Through the rotation the face planes were just turned by.)
       B.omega[b] = moving ? B.spin(b, inv_moment) : B.fixed_w[b];
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
@@ -224,7 +227,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   });
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b)
-      if (B.is_slave(b) && !B.deformable[b]) move_surface(m, B, b, refresh);  // (zoned: nodes)
+      if (B.is_slave(b) && !B.deformable[b]) move_surface(m, B, b);  // (zoned: nodes)
   });
   B.vertices_behind = true;
 }

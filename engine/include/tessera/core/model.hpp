@@ -69,6 +69,10 @@ struct Model {
   Contacts contacts;
   Blocks3 blocks3;
   std::vector<Contact3> contacts3;
+  // Set by each cycle's 3D law for its integration: whether contact i re-fits its plane or
+  // rebuilds its sub-contacts next cycle, reading its blocks' vertices (one byte a contact, so
+  // that each block's question reads a few bytes, not a contact record each).
+  std::vector<uint8_t> reads_vertices3;
   std::vector<Material> materials;
   std::vector<JointProperties> joints;
   std::vector<JointAssignment> joint_table;  // later entries win
