@@ -50,13 +50,14 @@ void rotate_about(RigidBody3& b, Vec3& pi, const Vec3& inv_moment, int k, double
 }
 }  // namespace
 
-void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt, const Vec3& inv) {
+void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt,
+               const Vec3& inv_moment) {
   // Momenta live at half steps, as in the 2D cycle: a whole kick with the torque at the present
   // orientation, then the free rotation with the new momentum (a half kick on each side of the
   // rotation would apply each torque a step late, and the lag feeds energy into rocking).
   b.momentum += dt * torque;
-  // (With the reciprocals the turns multiply, off the chain of divisions a step would otherwise
-  // be.)
+  // (The turns multiply by the moments' reciprocals: no divisions chained through the step.)
+  const Vec3& inv = inv_moment;
   Vec3 pi = b.orientation.conjugate() * b.momentum;
   const Vec3 turn = dt * pi.cwiseProduct(inv);  // body-frame rotation vector
   if (turn.cwiseAbs().maxCoeff() < 1e-8) {
