@@ -57,8 +57,7 @@ void joint_forces3d(Model& m) {
   const Blocks3& B = m.blocks3;
   std::vector<double> turn_speed(B.size());
   parallel_for(B.size(), [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b)
-      turn_speed[b] = B.omega[static_cast<size_t>(B.master[b])].norm() * B.bound_radius[b];
+    for (size_t b = b0; b < b1; ++b) turn_speed[b] = B.turn_speed(b);
   });
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
@@ -72,7 +71,7 @@ void joint_forces3d(Model& m) {
           update_plane3(m, c);
           const double deepest = joint_forces3(m, c, turn_speed.data());
           m.reads_vertices3[i] = !follows_face_plane(c, refresh);
-          if (deepest > kOverlapLimit * max_contact_depth3(m.blocks3, c.a, c.b))
+          if (deepest > kOverlapLimit * max_contact_depth3(B, c.a, c.b))
             too_deep.flag(static_cast<uint32_t>(i));
         }
       },
@@ -220,8 +219,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
       B.omega[b] = moving ? B.spin(b, inv_moment) : B.fixed_w[b];
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
                      B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
-      out.jump[b] =
-          dt * (body.velocity.norm() + B.bound_radius[b] * B.omega[b].norm()) / B.bound_radius[b];
+      out.jump[b] = dt * (body.velocity.norm() + B.turn_speed(b)) / B.bound_radius[b];
       if (!std::isfinite(out.jump[b])) out.jump[b] = 1e300;
     }
   });

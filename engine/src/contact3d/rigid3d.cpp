@@ -57,9 +57,8 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt,
   // rotation would apply each torque a step late, and the lag feeds energy into rocking).
   b.momentum += dt * torque;
   // (The turns multiply by the moments' reciprocals: no divisions chained through the step.)
-  const Vec3& inv = inv_moment;
   Vec3 pi = b.orientation.conjugate() * b.momentum;
-  const Vec3 turn = dt * pi.cwiseProduct(inv);  // body-frame rotation vector
+  const Vec3 turn = dt * pi.cwiseProduct(inv_moment);  // body-frame rotation vector
   if (turn.cwiseAbs().maxCoeff() < 1e-8) {
     // Below 1e-8 rad a step, the composition differs from one rotation by the rotation vector
     // by less than round-off (its error is of the order of the angle squared).
@@ -68,11 +67,11 @@ void step_body(RigidBody3& b, const Vec3& force, const Vec3& torque, double dt,
     b.orientation = Eigen::Quaterniond(q.w() - q.vec().dot(h), v.x(), v.y(), v.z());
   } else {
     // Symmetric composition: axes 0, 1 for half steps around axis 2 for a whole one.
-    rotate_about(b, pi, inv, 0, 0.5 * dt);
-    rotate_about(b, pi, inv, 1, 0.5 * dt);
-    rotate_about(b, pi, inv, 2, dt);
-    rotate_about(b, pi, inv, 1, 0.5 * dt);
-    rotate_about(b, pi, inv, 0, 0.5 * dt);
+    rotate_about(b, pi, inv_moment, 0, 0.5 * dt);
+    rotate_about(b, pi, inv_moment, 1, 0.5 * dt);
+    rotate_about(b, pi, inv_moment, 2, dt);
+    rotate_about(b, pi, inv_moment, 1, 0.5 * dt);
+    rotate_about(b, pi, inv_moment, 0, 0.5 * dt);
   }
   // Back to unit length: a step leaves it off by round-off only, so one Newton step for 1/|q|
   // (error of the order of that round-off squared) instead of a square root and a division; an

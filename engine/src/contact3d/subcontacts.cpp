@@ -324,8 +324,8 @@ double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
   // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
   // hundredth of the tolerance.
   // A deformable block's nodes move on their own: the fastest sub-contact counts as well.
-  const double turn_a = turn_speed ? turn_speed[a] : wa.norm() * B.bound_radius[a];
-  const double turn_b = turn_speed ? turn_speed[b] : wb.norm() * B.bound_radius[b];
+  const double turn_a = turn_speed ? turn_speed[a] : B.turn_speed(a);
+  const double turn_b = turn_speed ? turn_speed[b] : B.turn_speed(b);
   c.drift += dt * ((ba.velocity - bb.velocity).norm() + turn_a + turn_b);
   if (deformable) c.drift += dt * std::sqrt(fastest);
   return deepest;

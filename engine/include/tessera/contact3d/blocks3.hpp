@@ -117,6 +117,10 @@ struct Blocks3 {
     const Mat3& r = rotation[b];
     return r * (r.transpose() * body[b].momentum).cwiseProduct(inv_moment);
   }
+  // How fast block b's farthest point moves by its body's turning: |w| times its bound radius.
+  double turn_speed(size_t b) const {
+    return omega[static_cast<size_t>(master[b])].norm() * bound_radius[b];
+  }
   // Held still or at a prescribed velocity as a whole (a deformable block moves with its nodes).
   bool held(size_t b) const { return fixity[b] == kFix3All && !deformable[b]; }
   // Whether a world point lies inside block b (on the surface counts).

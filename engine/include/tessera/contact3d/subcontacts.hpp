@@ -31,8 +31,8 @@ inline double plane_refresh_drift(const Model& m) {
 }
 // The joint law at each sub-contact, and the contact's resultant force and torques (on a; b
 // takes the opposite). Returns the deepest overlap of its sub-contacts (0 if none overlaps).
-// turn_speed: each block's |w| times its bound radius, if the caller formed them once for all
-// its contacts (else formed here).
+// turn_speed: each block's Blocks3::turn_speed, if the caller formed them once for all its
+// contacts (else formed here).
 double joint_forces3(const Model& m, Contact3& c, const double* turn_speed = nullptr);
 
 }  // namespace tessera
