@@ -353,6 +353,31 @@ class TestBlocks3d : public QObject {
       }
     }
   }
+
+  void joinedBodyIsRemovedWhole() {
+    // An L of two joined pieces on a base: 'delete' of one piece takes the body whole, and
+    // removing one piece alone (master or slave) is refused with the model unchanged.
+    const std::string l_block =
+        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+        "block prism -1,-1 3,-1 3,0 -1,0 z=-1,2 group=base material=rock\n"
+        "block prism 0,0 0.4,0 0.4,1.2 0,1.2 z=0,1 material=rock\n"
+        "block prism 0.4,0.9 1.4,0.9 1.4,1.2 0.4,1.2 z=0,1 material=rock\n"
+        "join block=2,3\n";
+    for (const std::vector<uint8_t>& doomed : {std::vector<uint8_t>{0, 1, 0}, {0, 0, 1}}) {
+      ScriptRun r;
+      r.run(l_block);
+      Blocks3& B = r.model().blocks3;
+      const Vec3 centre = B.body[1].position;
+      QVERIFY_THROWS_EXCEPTION(std::invalid_argument, B.remove(doomed));
+      QCOMPARE(B.size(), size_t(3));
+      QCOMPARE(B.master[2], 1);
+      QVERIFY(B.body[1].position == centre);
+    }
+    ScriptRun r;
+    r.run(l_block + "delete block=3\n");
+    QCOMPARE(r.model().blocks3.size(), size_t(1));
+    QCOMPARE(r.model().blocks3.id[0], 1);
+  }
 };
 
 QTEST_APPLESS_MAIN(TestBlocks3d)

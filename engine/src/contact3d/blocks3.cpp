@@ -132,6 +132,15 @@ size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int mater
 }
 
 std::vector<int> Blocks3::remove(const std::vector<uint8_t>& doomed) {
+  // A body goes whole: a piece left without its master would keep neither frame nor mass, and a
+  // master without a piece would keep the piece's.
+  for (size_t b = 0; b < size(); ++b) {
+    const auto mb = static_cast<size_t>(master[b]);
+    if (doomed[b] != doomed[mb])
+      throw std::invalid_argument("blocks " + std::to_string(id[mb]) + " and " +
+                                  std::to_string(id[b]) +
+                                  " are pieces of one joined body: remove it whole");
+  }
   catch_up();  // (the blocks kept are copied as current)
   Blocks3 kept;
   std::vector<int> index(size(), -1);
@@ -141,14 +150,8 @@ std::vector<int> Blocks3::remove(const std::vector<uint8_t>& doomed) {
     append_block(kept, *this, b);
     kept.id.back() = id[b];
   }
-  // A slave whose master goes becomes the master of what is left of its body (its frame and
-  // mass stay the body's until the pieces are joined again).
-  for (size_t b = 0; b < kept.size(); ++b) {
-    const int old_master = kept.master[b];
-    kept.master[b] = index[static_cast<size_t>(old_master)] >= 0
-                         ? index[static_cast<size_t>(old_master)]
-                         : static_cast<int32_t>(b);
-  }
+  for (size_t b = 0; b < kept.size(); ++b)
+    kept.master[b] = index[static_cast<size_t>(kept.master[b])];
   *this = std::move(kept);
   return index;
 }

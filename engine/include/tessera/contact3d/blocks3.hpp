@@ -88,6 +88,8 @@ struct Blocks3 {
   size_t add(const Polyhedron& world, double density, int group_id, int material_id,
              const std::vector<int>& face_tags = {});
   // Removes the blocks whose flag is set; returns the new index of every old block (-1: gone).
+  // A joined body goes whole (std::invalid_argument, nothing changed, if a piece would stay
+  // without its master).
   std::vector<int> remove(const std::vector<uint8_t>& doomed);
   void set_density(size_t b, double density);
   // Refreshes the world cache of block b from its position and orientation: the face planes
