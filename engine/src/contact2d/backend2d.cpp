@@ -60,6 +60,12 @@ void resultants2d(Model& m) {
   add_reinforcement_forces(m);
 }
 
+// Not in 2D: a pair's moment about its second block is formed from the first block's centroid,
+// which the step may already have moved.
+bool gathers_in_step2d(const Model&) {
+  return false;
+}
+
 // Joint forces, then the bolts across them, the cables and liners (locally damped in static
 // runs).
 void joint_forces2d(Model& m) {
@@ -111,7 +117,7 @@ void stop2d(Model& m) {
 
 // Damping and integration, one degree of freedom at a time (under density scaling with the
 // scaled mass and moment of inertia).
-void integrate2d(Model& m, const Damping& d, BlockMotion& out) {
+void integrate2d(Model& m, const Damping& d, bool /*gather*/, BlockMotion& out) {
   Blocks& B = m.blocks;
   const double dt = m.dt;
   const auto& S = m.block_scale;
@@ -188,6 +194,7 @@ const Backend& backend2d() {
                           .geometry = update_contact_geometry,
                           .joint_forces = joint_forces2d,
                           .resultants = resultants2d,
+                          .gathers_in_step = gathers_in_step2d,
                           .power = power2d,
                           .motion_energy = motion_energy2d,
                           .stop = stop2d,

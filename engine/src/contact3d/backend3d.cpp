@@ -82,27 +82,32 @@ void joint_forces3d(Model& m) {
     update_cables(m, m.settings.damping == DampingMode::kNone ? 0.0 : m.settings.local_alpha);
 }
 
-// Gravity, loads and contact forces, gathered in a fixed order per block; slave pieces hand theirs
-// to their masters (in block order: deterministic).
-void resultants3d(Model& m) {
+// Block b's gravity, loads and contact forces, gathered in a fixed order (the law leaves each
+// contact's torque about both centroids: nothing the step moves is read).
+void resultant3d(Model& m, size_t b) {
   Blocks3& B = m.blocks3;
   const Vec3 g = m.settings.gravity3;
+  const double mass = B.body[b].mass;
+  Vec3 f = mass * g + B.load_force[b], t = B.load_moment[b];
+  double applied = mass * g.norm() + B.load_force[b].norm();
+  for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
+    const Contact3& c = m.contacts3[m.block_contacts[k] >> 1];
+    if (m.block_contacts[k] & 1)
+      f -= c.force, t += c.torque_b;
+    else
+      f += c.force, t += c.torque_a;
+    applied += c.force_mag;
+  }
+  B.force[b] = f, B.torque[b] = t, B.applied[b] = applied;
+}
+
+// Every block's resultant; slave pieces hand theirs to their masters (in block order:
+// deterministic), and cables theirs to their hosts.
+void resultants3d(Model& m) {
+  Blocks3& B = m.blocks3;
   const size_t n = B.size();
   parallel_for(n, [&](size_t b0, size_t b1) {
-    for (size_t b = b0; b < b1; ++b) {
-      const double mass = B.body[b].mass;
-      Vec3 f = mass * g + B.load_force[b], t = B.load_moment[b];
-      double applied = mass * g.norm() + B.load_force[b].norm();
-      for (uint32_t k = m.block_contact_begin[b]; k < m.block_contact_begin[b + 1]; ++k) {
-        const Contact3& c = m.contacts3[m.block_contacts[k] >> 1];
-        if (m.block_contacts[k] & 1)
-          f -= c.force, t += c.torque_b;
-        else
-          f += c.force, t += c.torque_a;
-        applied += c.force_mag;
-      }
-      B.force[b] = f, B.torque[b] = t, B.applied[b] = applied;
-    }
+    for (size_t b = b0; b < b1; ++b) resultant3d(m, b);
   });
   for (size_t b = 0; b < n; ++b)
     if (B.is_slave(b)) {
@@ -110,6 +115,14 @@ void resultants3d(Model& m) {
       B.force[mb] += B.force[b], B.torque[mb] += B.torque[b], B.applied[mb] += B.applied[b];
     }
   add_cable_forces3(m);
+}
+
+bool gathers_in_step3d(const Model& m) {
+  const Blocks3& B = m.blocks3;
+  if (!m.cables3.empty()) return false;
+  for (size_t b = 0; b < B.size(); ++b)
+    if (B.is_slave(b)) return false;
+  return true;
 }
 
 // As in 2D, on translation and rotation.
@@ -165,7 +178,7 @@ void move_surface(const Model& m, Blocks3& B, size_t b) {
   if (vertices_read(m, b)) B.update_vertices(b);
 }
 
-void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
+void integrate3d(Model& m, const Damping& d, bool gather, BlockMotion& out) {
   Blocks3& B = m.blocks3;
   const double dt = m.dt;
   const auto& S = m.block_scale;
@@ -173,6 +186,7 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
   out.reset(n);
   parallel_for(n, [&](size_t b0, size_t b1) {
     for (size_t b = b0; b < b1; ++b) {
+      if (gather) resultant3d(m, b);
       if (B.deformable[b]) continue;  // its nodes move in the zone stage
       RigidBody3& body = B.body[b];
       const uint8_t fix = B.fixity[b];
@@ -217,6 +231,12 @@ void integrate3d(Model& m, const Damping& d, BlockMotion& out) {
       move_surface(m, B, b);
       // (Through the rotation the face planes were just turned by.)
       B.omega[b] = moving ? B.spin(b, inv_moment) : B.fixed_w[b];
+    }
+    // The measures of the step, in a loop of their own: the square roots and divisions of one
+    // block do not wait for its step, and those of many blocks overlap.
+    for (size_t b = b0; b < b1; ++b) {
+      if (B.deformable[b] || B.is_slave(b)) continue;
+      const RigidBody3& body = B.body[b];
       out.drift[b] = (body.position - m.det_pos3[b]).norm() +
                      B.bound_radius[b] * turned(body.orientation, m.det_q3[b]);
       out.jump[b] = dt * (body.velocity.norm() + B.turn_speed(b)) / B.bound_radius[b];
@@ -265,6 +285,7 @@ const Backend& backend3d() {
                           .geometry = nullptr,
                           .joint_forces = joint_forces3d,
                           .resultants = resultants3d,
+                          .gathers_in_step = gathers_in_step3d,
                           .power = power3d,
                           .motion_energy = motion_energy3d,
                           .stop = stop3d,

@@ -60,16 +60,21 @@ struct Backend {
   void (*geometry)(Model& m);
   // Joint law at every contact (2D: shares of joint length first), giving contact forces.
   void (*joint_forces)(Model& m);
-  // Each block's resultant force and moment and the load it carries.
+  // Each block's resultant force and moment and the load it carries, in a pass of their own.
   void (*resultants)(Model& m);
+  // Whether each block's resultant may be gathered in its own step instead (integrate with
+  // `gather`), which spares a pass over the blocks: no block takes forces from another (a
+  // concave body's pieces, cables and bolts), and the sums read nothing the step moves.
+  bool (*gathers_in_step)(const Model& m);
   Power (*power)(const Model& m);
   // Twice the kinetic energy of the rigid blocks' motion (with the density-scaled inertia).
   double (*motion_energy)(const Model& m);
   // Sets every rigid block's velocity and spin to zero (kinetic damping; held blocks take
   // their prescribed velocities again when they move).
   void (*stop)(Model& m);
-  // Damping and central-difference integration of every rigid block.
-  void (*integrate)(Model& m, const Damping& d, BlockMotion& out);
+  // Damping and central-difference integration of every rigid block (each block's resultant
+  // first, if `gather`).
+  void (*integrate)(Model& m, const Damping& d, bool gather, BlockMotion& out);
   // Each block's own stable step on joints of stiffness k (Pa/m), in translation and in rotation
   // (infinity where it does not move that way).
   std::vector<std::array<double, 2>> (*block_steps)(const Model& m, double k);

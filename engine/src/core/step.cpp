@@ -92,10 +92,13 @@ void cycle(Model& m) {
   }
   {
     StageTimer t(run, kStageMotion);
-    be.resultants(m);
-    const Power p = servo_due(m) ? be.power(m) : Power{};
+    // The resultants in a pass of their own when the damping needs their power first or the
+    // back end cannot gather them block by block in the step (bit-identical either way).
+    const bool servo = servo_due(m), apart = servo || !be.gathers_in_step(m);
+    if (apart) be.resultants(m);
+    const Power p = servo ? be.power(m) : Power{};
     damping = cycle_damping(m, p.power, p.kin2);
-    be.integrate(m, damping, motion);
+    be.integrate(m, damping, !apart, motion);
   }
   {
     StageTimer t(run, kStageZones);
