@@ -125,7 +125,7 @@ const Spec kBlocks[] = {
        if (m.dim == 3 && plain_bodies(m)) return member(m.blocks3.body, &RigidBody3::velocity, o);
        return block_vectors(m, Q::kXVel, Q::kYVel, Q::kZVel);
      }},
-    {"disp", "displacements since each block was made (n, dim), m (copy)",
+    {"disp", "displacements since each block was made or 'reset displacement' (n, dim), m (copy)",
      [](const Model& m, py::handle) { return block_vectors(m, Q::kXDisp, Q::kYDisp, Q::kZDisp); }},
     {"rot", "rotation (n,), rad: 2D counter-clockwise angle (view); 3D angle turned (copy)",
      [](const Model& m, py::handle o) {

@@ -354,6 +354,48 @@ class TestBlocks3d : public QObject {
     }
   }
 
+  // 'reset displacement': displacements (and the 3D rotation) count from the reset, for 2D and
+  // 3D blocks, rigid and zoned, and grow again from zero when the load changes.
+  void resetDisplacementCountsFromNow_data() {
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<int>("quantity");
+    const std::string joint = "joint define j kn=1e8 ks=1e8 friction=30\njoint assign j\n";
+    const std::string rock3 =
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2600 E=1e9 nu=0.25\n" + joint +
+        "block box -1,-1,-1 2,2,0 group=base material=rock\nfix group=base\n"
+        "block box 0,0,0 1,1,1 material=rock group=top\n";
+    QTest::newRow("2D rigid") << QString::fromStdString(
+                                     "round 0.01\nmaterial define rock density=2600\n" + joint +
+                                     "block -1,-1 2,-1 2,0 -1,0 group=base material=rock\n"
+                                     "fix group=base\nblock 0,0 1,0 1,1 0,1 material=rock\n"
+                                     "gravity 0 -9.81\n")
+                              << int(HistoryQuantity::kYDisp);
+    QTest::newRow("3D rigid") << QString::fromStdString(rock3 + "gravity 0 0 -9.81\n")
+                              << int(HistoryQuantity::kZDisp);
+    QTest::newRow("3D zoned") << QString::fromStdString(rock3 +
+                                                        "zone generate edge=0.5 group=top\n"
+                                                        "gravity 0 0 -9.81\n")
+                              << int(HistoryQuantity::kZDisp);
+  }
+  void resetDisplacementCountsFromNow() {
+    QFETCH(QString, model);
+    QFETCH(int, quantity);
+    const HistorySeries disp{static_cast<HistoryQuantity>(quantity), 1, -1, ""};
+    const HistorySeries turn{HistoryQuantity::kRotation, 1, -1, ""};
+    const bool three = model.startsWith("dimension 3");
+    ScriptRun r;
+    r.run(model.toStdString() + "solve ratio=1e-5\n");
+    const double settled = history_value(r.model(), disp);
+    QVERIFY2(settled < -1e-5, std::to_string(settled).c_str());
+    r.run("reset displacement\n");
+    QCOMPARE(history_value(r.model(), disp), 0.0);
+    if (three) QCOMPARE(history_value(r.model(), turn), 0.0);
+    // Twice the weight: the block sinks again, from zero.
+    r.run(three ? "gravity 0 0 -19.62\nstep 50\n" : "gravity 0 -19.62\nstep 50\n");
+    const double more = history_value(r.model(), disp);
+    QVERIFY2(more < -1e-7 && more > 2 * settled, std::to_string(more).c_str());
+  }
+
   void joinedBodyIsRemovedWhole() {
     // An L of two joined pieces on a base: 'delete' of one piece takes the body whole, and
     // removing one piece alone (master or slave) is refused with the model unchanged.
