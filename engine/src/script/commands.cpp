@@ -61,13 +61,12 @@ void Interpreter::cmd_model(Args& a) {
 void Interpreter::cmd_reset(Args& a) {
   if (a.words.size() != 1 || a.words[0] != "displacement") fail("write 'reset displacement'");
   done(a);
-  // Displacements count from here: after the in-situ equilibrium, say. (2D and 3D blocks: a
-  // concave 3D body's from its master's reference; zone nodes.)
+  // Displacements count from here: after the in-situ equilibrium, say (2D and 3D blocks: a
+  // concave 3D body's from its master's reference; zone nodes). Rotations stay as they were.
   Blocks& B = model_.blocks;
   B.x_ref = B.x, B.y_ref = B.y;
   Blocks3& B3 = model_.blocks3;
-  for (size_t b = 0; b < B3.size(); ++b)
-    B3.ref[b] = B3.body[b].position, B3.ref_q[b] = B3.body[b].orientation;
+  for (size_t b = 0; b < B3.size(); ++b) B3.ref[b] = B3.body[b].position;
   model_.continuum.pos0 = model_.continuum.pos;
   model_.continuum3.pos0 = model_.continuum3.pos;
   log("reset: displacements are zero from cycle " + std::to_string(model_.cycle));
