@@ -103,11 +103,24 @@ void corner_subcontacts(const Model& m, Contact3& c, const Vec3& n) {
     while (k > 1 && (p[k - 1].p - p[0].p).norm() <= 1e-9 * scale) --k;
     p.resize(k);
   }
-  // Areas: half of each fan triangle beside a corner.
+  // Areas: half of each fan triangle beside a corner, the fan about the overlap's centroid: a
+  // uniform pressure's resultant then acts at the centroid, as it should (about the corners'
+  // mean it acts halfway from the centroid to that mean: off on a trapezoid, say).
   const size_t np = w.poly.size();
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   for (const PolyVertex& v : w.poly) centre += v.p;
   if (np) centre /= static_cast<double>(np);
+  {
+    double twice_area = 0.0;
+    Eigen::Vector2d moment = Eigen::Vector2d::Zero();
+    for (size_t i = 0; i < np; ++i) {
+      const Eigen::Vector2d p = w.poly[i].p - centre, q = w.poly[(i + 1) % np].p - centre;
+      const double fan = cross2(p, q);
+      twice_area += fan, moment += fan * (p + q);
+    }
+    // (A sliver of no area keeps the mean.)
+    if (std::abs(twice_area) > 1e-12 * scale * scale) centre += moment / (3.0 * twice_area);
+  }
   w.old.swap(c.subs);
   c.subs.clear(), c.nodes.clear();
   const Vec3 ma = B.world_normal[c.face_a], mb = B.world_normal[c.face_b];
