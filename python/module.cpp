@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
 
 namespace tessera::python {
 
@@ -432,7 +433,14 @@ void define_module(py::module_& mod) {
       .def_property_readonly(
           "cycles", [](PyModel& s) { return s.model().cycle; }, "cycles run so far")
       .def_property_readonly("time", [](PyModel& s) { return s.model().time; })
-      .def_property_readonly("dt", [](PyModel& s) { return s.model().dt; })
+      .def_property_readonly("dt",
+                             [](PyModel& s) {
+                               // The next cycle's step, formed now if the model changed since
+                               // the last (before the first cycle it would read 0).
+                               Model& m = s.model();
+                               if (m.dt_dirty && m.block_count() > 0) prepare(m);
+                               return m.dt;
+                             })
       .def_property_readonly("ratio", [](PyModel& s) { return s.model().ratio; })
       .def_property_readonly("groups", [](PyModel& s) { return s.model().groups; })
       .def_property_readonly("out", [](PyModel& s) { return s.interp->out_dir(); })

@@ -172,9 +172,12 @@ class Commands(unittest.TestCase):
 
     def test_cycle_and_solve(self):
         m = self.m
+        # The step is known before the first cycle (to size a run by time), and kept by it.
+        dt = m.dt
+        self.assertGreater(dt, 0.0)
         m.cycle(10)
         self.assertEqual(m.cycles, 10)
-        self.assertGreater(m.dt, 0.0)
+        self.assertEqual(m.dt, dt)
         self.assertAlmostEqual(m.time, 10 * m.dt, places=12)
         with self.assertRaises(ValueError):
             m.cycle(-1)
