@@ -425,6 +425,32 @@ class TestBlocks3d : public QObject {
     QVERIFY2(more < -1e-7 && more > 2 * settled, std::to_string(more).c_str());
   }
 
+  void aPieceActsOnItsWholeBody() {
+    // An L of two joined pieces: 'fix', 'free' and 'velocity' of either piece act on the body
+    // (they did nothing through the slave piece), and a piece takes no other material.
+    ScriptRun r;
+    r.run(
+        "dimension 3\ntolerance 0.005\nmaterial define rock density=2500\n"
+        "material define light density=1000\n"
+        "joint define j kn=1e10 ks=1e10 friction=45\njoint assign j\n"
+        "block prism 0,0 0.4,0 0.4,1.2 0,1.2 z=0,1 material=rock\n"
+        "block prism 0.4,0.9 1.4,0.9 1.4,1.2 0.4,1.2 z=0,1 material=rock\n"
+        "join block=1,2\ngravity 0 -9.81 0\nfix block=2\nstep 20\n");
+    const Blocks3& B = r.model().blocks3;
+    QCOMPARE(B.master[1], 0);
+    QCOMPARE(B.fixity[0], uint8_t(kFix3All));
+    QCOMPARE(B.body[0].position, B.ref[0]);
+    r.run("free block=2\nvelocity block=2 vx=1\n");
+    QCOMPARE(B.fixity[0], uint8_t(0));
+    QCOMPARE(B.fixity[1], uint8_t(0));
+    QCOMPARE(B.body[0].velocity.x(), 1.0);
+    r.run("step 20\n");
+    QVERIFY(B.body[0].position.y() < B.ref[0].y() - 1e-6);
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, r.run("material assign light block=2\n"));
+    r.run("material assign rock block=1,2\n");
+    QCOMPARE(B.body[0].mass, 2500 * (0.4 * 1.2 + 1.0 * 0.3));
+  }
+
   void joinedBodyIsRemovedWhole() {
     // An L of two joined pieces on a base: 'delete' of one piece takes the body whole, and
     // removing one piece alone (master or slave) is refused with the model unchanged.

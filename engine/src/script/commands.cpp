@@ -6,6 +6,7 @@
 
 #include "tessera/core/parallel.hpp"
 #include "tessera/generation/generators.hpp"
+#include "tessera/generation/generators3.hpp"
 #include "tessera/plugin.hpp"
 #include "tessera/script/expr.hpp"
 #include "tessera/script/script.hpp"
@@ -262,8 +263,19 @@ void Interpreter::cmd_material(Args& a) {
     const auto sel = select(a);
     done(a);
     const double rho_k = model_.materials[static_cast<size_t>(k)].density;
+    // The pieces of joined 3D bodies, whose mass and inertia come from their densities at the
+    // join.
+    const Blocks3& B3 = model_.blocks3;
+    std::vector<uint8_t> joined(B3.size(), 0);
+    for (size_t b = 0; b < B3.size(); ++b)
+      if (B3.is_slave(b)) joined[b] = joined[static_cast<size_t>(B3.master[b])] = 1;
     for (size_t b : sel) {
       if (model_.dim == 3) {
+        if (joined[b]) {
+          if (B3.material[b] == k) continue;
+          fail("block " + std::to_string(B3.id[b]) +
+               " is a piece of a joined body: assign materials before joining");
+        }
         model_.blocks3.material[b] = k, model_.blocks3.set_density(b, rho_k);
         continue;
       }
@@ -524,13 +536,17 @@ void Interpreter::cmd_free(Args& a) {
   auto& fixity = three ? model_.blocks3.fixity : model_.blocks.fixity;
   const auto& deformable = three ? model_.blocks3.deformable : model_.blocks.deformable;
   const uint8_t moves = three ? uint8_t(kFix3X | kFix3Y | kFix3Z) : uint8_t(kFixX | kFixY);
+  std::vector<size_t> rigid;
   for (size_t b : sel) {
     // A deformable block's nodes (its own fixity stays: its body does not move).
     if (deformable[b])
       set_block_nodes(model_, b, bits & moves, true, nullptr);
     else
-      fixity[b] &= static_cast<uint8_t>(~bits);
+      rigid.push_back(b);
   }
+  // (A piece of a joined 3D body frees the whole body.)
+  for (size_t b : three ? whole_bodies3(model_.blocks3, rigid) : rigid)
+    fixity[b] &= static_cast<uint8_t>(~bits);
   model_.touch();
 }
 

@@ -303,6 +303,7 @@ void Interpreter::cmd_fix3(Args& a) {
   const uint8_t bits = fixity_words(a.words);
   Blocks3& B = model_.blocks3;
   const uint8_t moves = kFix3X | kFix3Y | kFix3Z;
+  std::vector<size_t> rigid;
   for (size_t b : sel) {
     // A deformable block moves with its nodes: they are held (at their velocity now).
     if (B.deformable[b]) {
@@ -312,8 +313,13 @@ void Interpreter::cmd_fix3(Args& a) {
       set_block_nodes(model_, b, bits & moves, false, nullptr);
       continue;
     }
+    rigid.push_back(b);
+  }
+  // A piece of a joined body holds the whole body: every piece shows it, its master moves it,
+  // at the velocity it has now unless 'velocity' says otherwise.
+  for (size_t b : whole_bodies3(B, rigid)) {
     B.fixity[b] |= bits;
-    // Held at the velocity it has now unless 'velocity' says otherwise.
+    if (B.is_slave(b)) continue;
     for (int k = 0; k < 3; ++k)
       if (bits & (1 << k)) B.fixed_v[b][k] = B.body[b].velocity[k];
     if (bits & kFix3Rot) B.fixed_w[b] = Vec3::Zero();
@@ -337,10 +343,12 @@ void Interpreter::cmd_velocity3(Args& a) {
                       static_cast<uint8_t>((has[0] ? 1 : 0) | (has[1] ? 2 : 0) | (has[2] ? 4 : 0)));
       continue;
     }
+    // (A piece of a joined body: the body's velocity.)
+    const auto mb = static_cast<size_t>(B.master[b]);
     for (int k = 0; k < 3; ++k) {
       if (!has[k]) continue;
-      B.fixed_v[b][k] = v[k];
-      if (!(B.fixity[b] & (1 << k))) B.body[b].velocity[k] = v[k];
+      B.fixed_v[mb][k] = v[k];
+      if (!(B.fixity[mb] & (1 << k))) B.body[mb].velocity[k] = v[k];
     }
   }
 }
