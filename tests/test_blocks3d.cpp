@@ -425,6 +425,30 @@ class TestBlocks3d : public QObject {
     QVERIFY2(more < -1e-7 && more > 2 * settled, std::to_string(more).c_str());
   }
 
+  void angularVelocitySpinsABlock() {
+    // A free box spun about its long (principal) axis keeps turning at that rate; one held whole
+    // turns at its prescribed rate; one with only its rotation fixed refuses.
+    const std::string box =
+        "dimension 3\ntolerance 0.01\nmaterial define rock density=2500\n"
+        "block box 0,0,0 1,2,3 material=rock\ngravity 0 0 0\ntimestep fixed 1e-3\n"
+        "damping none\n";
+    ScriptRun free, held, part;
+    free.run(box + "velocity block=1 wz=0.5 vx=0.1\n");
+    const Blocks3& B = free.model().blocks3;
+    QVERIFY((B.body[0].angular_velocity() - Vec3(0, 0, 0.5)).norm() < 1e-12);
+    QCOMPARE(B.body[0].velocity.x(), 0.1);
+    const Vec3 momentum = B.body[0].momentum;
+    free.run("step 1000\n");
+    const HistorySeries turn{HistoryQuantity::kRotation, 0, -1, ""};
+    QVERIFY(std::abs(history_value(free.model(), turn) - 0.5) < 1e-9);
+    QVERIFY((B.body[0].momentum - momentum).norm() < 1e-12 * momentum.norm());
+    QVERIFY(std::abs(B.body[0].position.x() - 0.5 - 0.1) < 1e-12);
+    held.run(box + "fix block=1\nvelocity block=1 wz=0.2\nstep 1000\n");
+    QVERIFY(std::abs(history_value(held.model(), turn) - 0.2) < 1e-9);
+    part.run(box + "fix block=1 rotation\n");
+    QVERIFY_THROWS_EXCEPTION(tessera::ScriptError, part.run("velocity block=1 wz=0.2\n"));
+  }
+
   void aPieceActsOnItsWholeBody() {
     // An L of two joined pieces: 'fix', 'free' and 'velocity' of either piece act on the body
     // (they did nothing through the slave piece), and a piece takes no other material.

@@ -329,27 +329,52 @@ void Interpreter::cmd_fix3(Args& a) {
 
 void Interpreter::cmd_velocity3(Args& a) {
   const auto sel = select(a);
-  double v[3] = {0, 0, 0};
-  bool has[3];
+  double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+  bool has[3], turns[3];
   has[0] = take_num(a, "vx", v[0]), has[1] = take_num(a, "vy", v[1]),
   has[2] = take_num(a, "vz", v[2]);
+  turns[0] = take_num(a, "wx", w[0]), turns[1] = take_num(a, "wy", w[1]),
+  turns[2] = take_num(a, "wz", w[2]);
   done(a);
-  if (!has[0] && !has[1] && !has[2]) fail("'velocity' needs vx=, vy= or vz=");
+  const bool spin = turns[0] || turns[1] || turns[2];
+  if (!has[0] && !has[1] && !has[2] && !spin)
+    fail("'velocity' needs vx=, vy=, vz= or an angular velocity wx=, wy=, wz=");
   // As in 2D: a fixed component takes its new velocity at the next integration.
   Blocks3& B = model_.blocks3;
   for (size_t b : sel) {
     if (B.deformable[b]) {
+      if (spin)
+        fail("block " + std::to_string(B.id[b]) +
+             " is deformable: its nodes take vx=, vy=, vz= (no angular velocity)");
       set_block_nodes(model_, b, 0, false, v,
                       static_cast<uint8_t>((has[0] ? 1 : 0) | (has[1] ? 2 : 0) | (has[2] ? 4 : 0)));
       continue;
     }
     // (A piece of a joined body: the body's velocity.)
     const auto mb = static_cast<size_t>(B.master[b]);
+    RigidBody3& body = B.body[mb];
     for (int k = 0; k < 3; ++k) {
       if (!has[k]) continue;
       B.fixed_v[mb][k] = v[k];
-      if (!(B.fixity[mb] & (1 << k))) B.body[mb].velocity[k] = v[k];
+      if (!(B.fixity[mb] & (1 << k))) body.velocity[k] = v[k];
     }
+    if (!spin) continue;
+    // The angular velocity (world axes, rad/s), the components not given kept: a held body
+    // turns at it, a free one takes the angular momentum that spins it so.
+    const bool held = B.fixity[mb] == kFix3All;
+    if ((B.fixity[mb] & kFix3Rot) && !held)
+      fail("block " + std::to_string(B.id[b]) +
+           " has its rotation fixed: free it, or fix it whole, to turn it");
+    Vec3 omega = held ? B.fixed_w[mb] : body.angular_velocity();
+    for (int k = 0; k < 3; ++k)
+      if (turns[k]) omega[k] = w[k];
+    if (held) {
+      B.fixed_w[mb] = omega;
+    } else {
+      const Mat3 r = body.orientation.toRotationMatrix();
+      body.momentum = r * body.principal.cwiseProduct(r.transpose() * omega);
+    }
+    B.omega[mb] = omega;
   }
 }
 

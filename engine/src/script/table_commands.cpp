@@ -153,9 +153,9 @@ void Interpreter::run_scaled(const TimedCommand& t, double scale) {
   };
   Args a = t.args;
   for (auto& [key, value] : a.keys)
-    if (key == "vx" || key == "vy" || key == "vz" || key == "omega" || key == "velocity" ||
-        key == "stress" || key == "pressure" || key == "fx" || key == "fy" || key == "fz" ||
-        key == "mx" || key == "my" || key == "mz" || key == "moment")
+    if (key == "vx" || key == "vy" || key == "vz" || key == "omega" || key == "wx" || key == "wy" ||
+        key == "wz" || key == "velocity" || key == "stress" || key == "pressure" || key == "fx" ||
+        key == "fy" || key == "fz" || key == "mx" || key == "my" || key == "mz" || key == "moment")
       value = scaled(value);
   if (a.command == "gravity")
     for (std::string& w : a.words) w = scaled(w);
