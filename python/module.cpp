@@ -84,6 +84,18 @@ std::vector<double> rows_of(const py::array_t<double, py::array::c_style | py::a
   return out;
 }
 
+// Per-block turning quantities (a moment, an angular velocity): in 2D one number a block, given
+// as a number for all or (n,); in 3D a vector, (n, 3) or (3,) for all. Empty if not given.
+std::vector<double> turn_rows(
+    const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& a,
+    size_t n, size_t dm, const char* what) {
+  if (!a) return {};
+  if (dm == 1 && a->ndim() == 0) return std::vector<double>(n, *a->data());
+  if (dm == 1 && a->ndim() == 1 && static_cast<size_t>(a->shape(0)) == n)
+    return std::vector<double>(a->data(), a->data() + n);
+  return rows_of(*a, n, dm, what);
+}
+
 // The numbers of all blocks, in the engine's order (a write given no `blocks=`).
 std::vector<int> all_block_ids(const Model& m) {
   return m.dim == 3 ? m.blocks3.id : m.blocks.id;
@@ -281,23 +293,34 @@ void define_module(py::module_& mod) {
       .def(
           "set_velocity",
           [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
-             std::optional<std::vector<int>> blocks) {
+             std::optional<std::vector<int>> blocks,
+             std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> omega) {
             const Model& m = s.model();
             const std::vector<int> ids = blocks ? *blocks : all_block_ids(m);
-            const size_t d = m.dim;
+            const size_t d = m.dim, dm = m.dim == 3 ? 3 : 1;
             const std::vector<double> rows = rows_of(v, ids.size(), d, "set_velocity");
+            const std::vector<double> turn =
+                turn_rows(omega, ids.size(), dm, "set_velocity(omega=)");
             std::vector<std::string> lines;
             for (size_t i = 0; i < ids.size(); ++i) {
+              // All blocks of a 3D model: a joined body's velocity is its first piece's row.
+              if (!blocks && m.dim == 3 && m.blocks3.is_slave(i)) continue;
               std::string l = "velocity block=" + std::to_string(ids[i]);
               for (size_t k = 0; k < d; ++k)
                 l += std::string(" v") + "xyz"[k] + "=" + number(rows[i * d + k]);
+              if (!turn.empty() && dm == 1) l += " omega=" + number(turn[i]);
+              if (!turn.empty() && dm == 3)
+                for (size_t k = 0; k < 3; ++k)
+                  l += std::string(" w") + "xyz"[k] + "=" + number(turn[i * 3 + k]);
               lines.push_back(l);
             }
             s.run_lines(lines);
           },
-          py::arg("v"), py::arg("blocks") = py::none(),
+          py::arg("v"), py::arg("blocks") = py::none(), py::arg("omega") = py::none(),
           "Sets block velocities (rows for the blocks numbered, or all): the velocity of a free "
-          "degree of freedom, the prescribed one of a fixed one (the 'velocity' command)")
+          "degree of freedom, the prescribed one of a fixed one (the 'velocity' command); "
+          "omega, if given, the angular velocity (2D (n,) or a number, 3D (n, 3) world vector; "
+          "a joined 3D body takes its first piece's row when all are given)")
       .def(
           "set_force",
           [](PyModel& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& f,
@@ -312,14 +335,8 @@ void define_module(py::module_& mod) {
             const auto skipped = [&](size_t i) {
               return !blocks && m.dim == 3 && m.blocks3.is_slave(i);
             };
-            std::vector<double> turn;
-            if (moment && dm == 1 && moment->ndim() == 0)
-              turn.assign(ids.size(), *moment->data());
-            else if (moment && dm == 1 && moment->ndim() == 1 &&
-                     static_cast<size_t>(moment->shape(0)) == ids.size())
-              turn.assign(moment->data(), moment->data() + ids.size());
-            else if (moment)
-              turn = rows_of(*moment, ids.size(), dm, "set_force(moment=)");
+            const std::vector<double> turn =
+                turn_rows(moment, ids.size(), dm, "set_force(moment=)");
             std::vector<std::string> lines;
             for (size_t i = 0; i < ids.size(); ++i) {
               if (skipped(i)) continue;

@@ -247,8 +247,9 @@ class Commands(unittest.TestCase):
         m.set_velocity(np.array([[0.0, 0.0], [0.5, -0.25]]))
         np.testing.assert_array_equal(m.blocks.vel[1], [0.5, -0.25])
         np.testing.assert_array_equal(m.blocks.vel[0], [0.0, 0.0])  # fixed: prescribed zero
-        m.set_velocity([1.0, 2.0], blocks=[2])
+        m.set_velocity([1.0, 2.0], blocks=[2], omega=0.25)
         np.testing.assert_array_equal(m.blocks.vel[1], [1.0, 2.0])
+        self.assertEqual(m.blocks.angvel[1], 0.25)
         with self.assertRaisesRegex(ValueError, r"shaped \(1, 2\) or \(2,\), not \(3,\)"):
             m.set_velocity([1.0, 2.0, 3.0], blocks=[2])
         with self.assertRaisesRegex(ValueError, "finite"):
@@ -360,6 +361,18 @@ class Stack3D(unittest.TestCase):
         np.testing.assert_array_equal(m.blocks.load, load)
         m.set_force(2 * m.blocks.load)
         self.assertEqual(m.blocks.load[1, 2], -2e4)
+
+    def test_set_velocity_on_a_joined_body_with_spin(self):
+        m = model(STACK3 + "block box 1,0,0 2,1,1 group=cube material=rock\njoin group=cube\n",
+                  "joined_spin")
+        v, w = np.zeros((3, 3)), np.zeros((3, 3))
+        v[1], w[1] = [0.1, 0.0, 0.0], [0.0, 0.0, 0.5]  # the body's first piece
+        v[2] = [9.0, 9.0, 9.0]  # its other piece's row is not used
+        m.set_velocity(v, omega=w)
+        np.testing.assert_array_equal(m.blocks.vel[1], [0.1, 0.0, 0.0])
+        np.testing.assert_allclose(m.blocks.angvel[1], [0.0, 0.0, 0.5], atol=1e-12)
+        with self.assertRaisesRegex(ValueError, r"omega=\) takes an array shaped \(1, 3\)"):
+            m.set_velocity([0.0, 0.0, 0.0], blocks=[2], omega=[1.0, 2.0])
 
     def test_arrays_3d(self):
         m = self.m
