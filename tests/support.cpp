@@ -4,6 +4,7 @@
 #include <QMetaMethod>
 #include <QTest>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -141,6 +142,12 @@ int run_tests(QObject& test, int argc, char** argv) {
   }
   for (QByteArray& n : names) args.push_back(n.data());
   return QTest::qExec(&test, static_cast<int>(args.size()), args.data());
+}
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
 }
 
 }  // namespace tessera::test

@@ -34,6 +34,9 @@ std::string incline_script(double psi, double phi, double b = 1.0, double h = 1.
 // FNV-1a hash of the dynamic state (positions, velocities, contact stresses), bit for bit.
 uint64_t state_hash(const Model& m);
 
+// A number as script text, to every digit a double holds.
+std::string num(double v);
+
 // The zone tests' rock: density 2000, E = 1 GPa, nu = 0.25, of the given zone model.
 inline ZoneProperties zone_rock(const std::string& model = "elastic") {
   ZoneProperties p;

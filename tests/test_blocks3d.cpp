@@ -11,6 +11,7 @@
 #include "tessera/generation/cutting3.hpp"
 
 using namespace tessera;
+using tessera::test::num;
 using tessera::test::ScriptRun;
 using tessera::test::wedge_limit_angle;
 using tessera::test::wedge_script;
@@ -18,11 +19,6 @@ using tessera::test::wedge_script;
 namespace {
 constexpr double kDeg = M_PI / 180;
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
 std::string pt(const Vec3& p) {
   return num(p.x()) + "," + num(p.y()) + "," + num(p.z());
 }

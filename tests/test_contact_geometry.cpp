@@ -14,6 +14,7 @@
 #include "tessera/core/step.hpp"
 
 using namespace tessera;
+using tessera::test::num;
 using tessera::test::ScriptRun;
 
 namespace {
@@ -70,6 +71,34 @@ class TestContactGeometry : public QObject {
     // (before: corner 5 of block 1 at -0.104 m, 1.8e9 N).
     QVERIFY(deepest > -1e-9);
     QVERIFY(largest < 1.0);
+  }
+
+  // Contacts are found at every gap below the tolerance, as the detection passes' spacing (a
+  // block moving half the tolerance) assumes: two blocks closing from a gap just inside it, each
+  // moving just under half of it, must already be in contact. (The corners were tested against
+  // the other block grown by half the tolerance only: a square 0.6 tolerance above its base had
+  // no contact, in 2D; 3D found it.)
+  void contactsAreFoundWithinTheTolerance() {
+    const std::string rock =
+        "material define rock density=2500\njoint define j kn=1e9 ks=1e9 friction=40\n"
+        "joint assign j\n";
+    for (const double gap : {0.3, 0.6, 0.95, 1.05}) {
+      for (const int dim : {2, 3}) {
+        const std::string y = num(gap * 0.005), top = num(1 + gap * 0.005);
+        const std::string blocks =
+            dim == 2
+                ? "round 0.005\n" + rock + "block -1,-1 2,-1 2,0 -1,0 material=rock\nblock 0," + y +
+                      " 1," + y + " 1," + top + " 0," + top + " material=rock\ngravity 0 -9.81\n"
+                : "dimension 3\ntolerance 0.005\n" + rock +
+                      "block box -1,-1,-1 2,2,0 material=rock\nblock box 0,0," + y + " 1,1," + top +
+                      " material=rock\ngravity 0 0 -9.81\n";
+        ScriptRun r;
+        r.run(blocks + "fix block=1\nstep 1\n");
+        const size_t found = dim == 2 ? r.model().contacts.size() : r.model().contacts3.size();
+        qInfo("%dD, gap %.2f of the tolerance: %zu contacts", dim, gap, found);
+        QCOMPARE(found > 0, gap < 1.0);
+      }
+    }
   }
 
   // A detection pass carries each contact's history to the same contact (the same corner of the

@@ -13,18 +13,13 @@
 #include "tessera/generation/cutting3.hpp"
 
 using namespace tessera;
+using tessera::test::num;
 using tessera::test::ScriptRun;
 using tessera::test::state_hash;
 using tessera::test::wedge_limit_angle;
 
 namespace {
 constexpr double kDeg = M_PI / 180.0;
-
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 // The `factor of safety F` line the run logged.
 double logged_fos(const ScriptRun& r) {

@@ -134,16 +134,17 @@ FeatureHit found_hit(const Blocks& B, const Found& f) {
   return hit;
 }
 
-// Corners of `owner` within reach of block `other`.
+// Corners of `owner` within reach of block `other` (a gap below `reach`); `other_box` is its box
+// grown by reach - margin, so a corner's arc is tested against it grown by `margin` more.
 void corner_search(const Blocks& B, uint32_t owner, uint32_t other, const Box& other_box,
-                   double reach, std::vector<Found>& out) {
+                   double reach, double margin, std::vector<Found>& out) {
   const bool corners = owner < other;
   const int nf = 2 * static_cast<int>(B.vertex_count(other));
   for (uint32_t v = B.vert_begin[owner]; v < B.vert_begin[owner + 1]; ++v) {
     if (!B.convex[v]) continue;
     const CornerArc arc = corner_arc(B, owner, v);
     const Vec2& c = arc.centre;
-    const double r = arc.radius;
+    const double r = arc.radius + margin;
     if (c.x() + r < other_box.x0 || c.x() - r > other_box.x1 || c.y() + r < other_box.y0 ||
         c.y() - r > other_box.y1)
       continue;
@@ -211,8 +212,8 @@ void detect_contacts(Model& m) {
   std::vector<Found> scratch;  // one pair's finds
   const auto pair_finds = [&](uint32_t lo, uint32_t hi) {
     scratch.clear();
-    corner_search(B, lo, hi, boxes[hi], tol, scratch);
-    corner_search(B, hi, lo, boxes[lo], tol, scratch);
+    corner_search(B, lo, hi, boxes[hi], tol, 0.5 * tol, scratch);
+    corner_search(B, hi, lo, boxes[lo], tol, 0.5 * tol, scratch);
   };
   // The joint of a new contact, from the tag of the face met (for a rounded corner, the later
   // of its two edges); -1 when no joint properties apply.
