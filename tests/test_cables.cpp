@@ -9,6 +9,7 @@
 #include "tessera/io/state_io.hpp"
 
 using namespace tessera;
+using tessera::test::num;
 using tessera::test::ScriptRun;
 
 namespace {
@@ -282,6 +283,39 @@ class TestCables : public QObject {
     // Nodes every 0.1 m from x = 0.2: the grout starts at node 22, x = 2.4.
     for (uint32_t i = 0; i < 22; ++i) QCOMPARE(K.bonded[i], 0.0);
     QCOMPARE(K.bonded[22], 0.05);
+  }
+  // A block on a 30 degree slide held by a cable across the joint (tension cap 6000 N), on soft
+  // joints: with friction cut by 1.30, beyond the limit tan 20 (W cos 30 + T sin 30) /
+  // (W sin 30 - T cos 30) = 1.2485, block and cable nodes slide on together; the block alone is in
+  // balance (its grout pulls it back), the nodes are not, and the ratio must say so (it counted
+  // blocks only: 'solve' stopped at 1e-5 with the block sliding 1.75 mm/s, and 'solve fos'
+  // gave 1.30 on these joints). At 1.2 the model stands.
+  void creepingCableNodesAreNotSolved() {
+    const std::string model =
+        "dimension 3\ntolerance 0.005\nset c = cos(30)\nset s = sin(30)\n"
+        "material define rock density=2500\njoint define j kn=1e8 ks=1e8 friction=20\n"
+        "joint assign j\n"
+        "block prism (-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s) z=-1,2 "
+        "group=slab material=rock\n"
+        "block prism 0,0 c,s (c-s),(s+c) (-s),c z=0,1 group=blk material=rock\nfix group=slab\n"
+        "cable -0.117,0.25,0.5 1.383,0.25,0.5 segments=15 ea=1e8 kbond=1e9 sbond=0 tension=6000 "
+        "name=cb\ntable ramp 0,0 1,1\ngravity 0 -9.81 0 table=ramp\nstep 2000\ntable stop\n"
+        "solve ratio=1e-8\n";
+    for (const double factor : {1.2, 1.3}) {
+      ScriptRun r;
+      r.run(model + "joint define j kn=1e8 ks=1e8 friction=(atan(tan(20)/" + num(factor) +
+            "))\nsolve ratio=1e-5 cycles=20000\n");
+      const Model& m = r.model();
+      const double speed = m.blocks3.body[1].velocity.norm();
+      qInfo("friction cut by %.2f: ratio %.3g, block at %.3g m/s", factor, m.ratio, speed);
+      if (factor < 1.2485) {
+        QVERIFY(m.ratio <= 1e-5);
+        QVERIFY(speed < 1e-5);
+      } else {
+        QVERIFY(m.ratio > 1e-3);
+        QVERIFY(speed > 1e-4);
+      }
+    }
   }
   // Deleting the rock a cable runs through cuts it; the rest carries on, and state files keep
   // it bit for bit.

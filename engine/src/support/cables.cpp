@@ -91,6 +91,7 @@ void update(Model& m, CablesT<D>& K, double alpha) {
   using V = typename CablesT<D>::V;
   const double dt = m.dt;
   std::vector<V> h;
+  K.balance.clear();
   for (const Cable& c : K.cables) {
     const CableProperties& p = c.props;
     node_axes(m, K, c, h);
@@ -140,7 +141,10 @@ void update(Model& m, CablesT<D>& K, double alpha) {
       K.host_force[i] = -grout * t;
       // The node's motion along the axis; the host's motion across it carries the node along.
       const double fa = f.dot(t) + grout;
-      if (K.inertia[i] > 0.0) K.vel[i] += dt * locally_damped(fa, K.vel[i], alpha) / K.inertia[i];
+      if (K.inertia[i] > 0.0) {
+        K.balance.add(std::abs(fa), std::abs(f.dot(t)) + std::abs(grout));
+        K.vel[i] += dt * locally_damped(fa, K.vel[i], alpha) / K.inertia[i];
+      }
       K.slip[i] += dt * (vh.dot(t) - K.vel[i]);
     }
   }

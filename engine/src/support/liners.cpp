@@ -90,6 +90,7 @@ void update_liners(Model& m, double alpha) {
     L.moment_sum[i] -= mi, L.moment_sum[j] -= mj;
   }
   // The interface, then each node's motion.
+  L.balance.clear();
   for (size_t i = 0; i < L.size(); ++i) {
     const LinerProperties& p = L.liners[L.liner[i]].props;
     const Vec2 nrm = L.normal[i], s = perp(nrm);
@@ -108,6 +109,7 @@ void update_liners(Model& m, double alpha) {
     const Vec2 f_int = -L.length[i] * (pr * nrm + sh * s);
     L.host_force[i] = -f_int;
     const Vec2 f = L.force[i] + f_int;
+    if (L.mass[i] > 0.0) L.balance.add(f.norm(), L.force[i].norm() + f_int.norm());
     L.force[i] = f;
     if (L.mass[i] <= 0.0) continue;
     for (int c = 0; c < 2; ++c)

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "tessera/support/anchor3.hpp"
+#include "tessera/support/node_balance.hpp"
 #include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
@@ -78,6 +79,8 @@ struct CablesT {
   std::vector<V> pos, axis, host_force;
   // Per node, the zone that hosts it (a cache for the confinement, found again when stale).
   std::vector<int32_t> zone;
+  // The free nodes' balance along their axes in the last cycle (the model's ratio counts it).
+  NodeBalance balance;
 
   size_t size() const { return cable.size(); }
   bool empty() const { return cables.empty(); }

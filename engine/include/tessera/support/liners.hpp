@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tessera/support/node_balance.hpp"
 #include "tessera/support/reinforcement.hpp"
 
 namespace tessera {
@@ -58,6 +59,8 @@ struct Liners {
   // Per element (from node i to the next of its liner; unused at an open liner's last node):
   // axial force, end moments (on the element, anticlockwise), shear, plastic parts.
   std::vector<double> axial, m_start, m_end, v_shear, plastic_axial, hinge_start, hinge_end;
+  // The free nodes' balance in the last cycle (the model's ratio counts it).
+  NodeBalance balance;
 
   size_t size() const { return liner.size(); }
   bool empty() const { return liners.empty(); }
