@@ -68,6 +68,21 @@ class TestStrengthReduction : public QObject {
     QVERIFY(QFileInfo::exists(QString::fromStdString(r.path("fos_mechanism/blocks.pvd"))));
   }
 
+  // A block on a frictionless plane (as a joint whose bond has broken for good), not solved
+  // before the search: every trial fails, and the warning says the model was failing already
+  // rather than only "below 1/64".
+  void searchOnAFailingModelSaysSo() {
+    ScriptRun r;
+    r.run(
+        "round 0.005\nset c = cos(30)\nset s = sin(30)\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=0\njoint assign j\n"
+        "block (-8*c+s),(-8*s-c) (4*c+s),(4*s-c) 4*c,4*s (-8*c),(-8*s) group=slab "
+        "material=rock\nblock 0,0 c,s (c-s),(s+c) (-s),c material=rock\nfix group=slab\n"
+        "gravity 0 -9.81\nstep 200\nsolve fos cycles=500\n");
+    QVERIFY2(r.log.find("not in equilibrium before the search") != std::string::npos,
+             r.log.c_str());
+  }
+
   // The same block in 2D on a Barton-Bandis joint: the peak strength, divided by F, of each of
   // its two contacts at the normal force it carries at equilibrium (the toe more than the heel):
   // F = sum Fn_i tan(phi_r + JRC log10(JCS L_i / Fn_i)) / sum |Fs_i|. Solved with kinetic

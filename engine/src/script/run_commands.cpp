@@ -203,6 +203,14 @@ void Interpreter::solve_fos(Args& a) {
                   res.factor > 1.0 ? "stood" : "failed", res.factor > 1.0 ? "above" : "below",
                   res.factor);
     warn(buf);
+    // Failing at every factor, even the strongest, most often means it was failing already.
+    if (res.factor < 1.0 && model_.cycle > 0 && model_.ratio > o.ratio) {
+      std::snprintf(buf, sizeof buf,
+                    "the model was not in equilibrium before the search (ratio %.2e above "
+                    "%.2e): solve it first, with 'solve ratio=%.2g'",
+                    model_.ratio, o.ratio, o.ratio);
+      warn(buf);
+    }
   }
   std::snprintf(buf, sizeof buf, "factor of safety %.2f (%zu trials)", res.factor,
                 res.trials.size());
