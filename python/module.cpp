@@ -96,6 +96,12 @@ std::vector<double> turn_rows(
   return rows_of(*a, n, dm, what);
 }
 
+// Whether row i of a write given for all blocks (no `blocks=`) is skipped: a joined 3D body
+// takes its first piece's row (as m.blocks.load shows it), its other pieces' rows unused.
+bool later_piece_row(const Model& m, bool all, size_t i) {
+  return all && m.dim == 3 && m.blocks3.is_slave(i);
+}
+
 // The numbers of all blocks, in the engine's order (a write given no `blocks=`).
 std::vector<int> all_block_ids(const Model& m) {
   return m.dim == 3 ? m.blocks3.id : m.blocks.id;
@@ -303,8 +309,7 @@ void define_module(py::module_& mod) {
                 turn_rows(omega, ids.size(), dm, "set_velocity(omega=)");
             std::vector<std::string> lines;
             for (size_t i = 0; i < ids.size(); ++i) {
-              // All blocks of a 3D model: a joined body's velocity is its first piece's row.
-              if (!blocks && m.dim == 3 && m.blocks3.is_slave(i)) continue;
+              if (later_piece_row(m, !blocks, i)) continue;
               std::string l = "velocity block=" + std::to_string(ids[i]);
               for (size_t k = 0; k < d; ++k)
                 l += std::string(" v") + "xyz"[k] + "=" + number(rows[i * d + k]);
@@ -330,16 +335,11 @@ void define_module(py::module_& mod) {
             const std::vector<int> ids = blocks ? *blocks : all_block_ids(m);
             const size_t d = m.dim, dm = m.dim == 3 ? 3 : 1;
             const std::vector<double> rows = rows_of(f, ids.size(), d, "set_force");
-            // All blocks of a 3D model: a joined body's load is its first piece's row (as
-            // m.blocks.load shows it); the other pieces' rows are not used.
-            const auto skipped = [&](size_t i) {
-              return !blocks && m.dim == 3 && m.blocks3.is_slave(i);
-            };
             const std::vector<double> turn =
                 turn_rows(moment, ids.size(), dm, "set_force(moment=)");
             std::vector<std::string> lines;
             for (size_t i = 0; i < ids.size(); ++i) {
-              if (skipped(i)) continue;
+              if (later_piece_row(m, !blocks, i)) continue;
               std::string l = "load block=" + std::to_string(ids[i]);
               for (size_t k = 0; k < d; ++k)
                 l += std::string(" f") + "xyz"[k] + "=" + number(rows[i * d + k]);
