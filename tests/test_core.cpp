@@ -452,6 +452,45 @@ class TestCore : public QObject {
     QCOMPARE(checked, 4);
   }
 
+  // contact_cycle3 does a contact whose sub-contacts all stay open in the plane's pass: the same
+  // state, bit for bit, as the plane's pass and then the law (a settling 3D wall, whose head
+  // joints stay open; with the hint forced on every contact, the closed ones leave the pass).
+  void openContactsDoneInThePlanePass() {
+    for (const bool force_hint : {false, true}) {
+      ScriptRun r;
+      r.run(
+          "dimension 3\ntolerance 0.005\nmaterial define stone density=2200\n"
+          "joint define dry kn=5e9 ks=2e9 friction=35\njoint assign dry\n"
+          "block box -0.5,-0.3,-0.4 2.9,0.6,0 group=footing material=stone\nfix group=footing\n"
+          "wall origin=0,0,0 brick=0.6,0.3,0.3 courses=4 bricks=4 group=wall material=stone\n"
+          "gravity 0 0 -9.81\nstep 40\n");
+      const Model& m = r.model();
+      Model fast = m, slow = m;
+      int open = 0, closed = 0;
+      for (size_t i = 0; i < m.contacts3.size(); ++i) {
+        Contact3 &f = fast.contacts3[i], &s = slow.contacts3[i];
+        if (force_hint) f.open = true;
+        (f.open ? open : closed) += 1;
+        const double deep_fast = contact_cycle3(fast, f, nullptr);
+        update_plane3(slow, s);
+        QVERIFY(deep_fast == joint_forces3(slow, s));
+        QCOMPARE(f.open, s.open);
+        QVERIFY(f.drift == s.drift);
+        QVERIFY(f.force == s.force && f.torque_a == s.torque_a && f.torque_b == s.torque_b);
+        QVERIFY(f.force_mag == s.force_mag);
+        QCOMPARE(f.subs.size(), s.subs.size());
+        for (size_t k = 0; k < f.subs.size(); ++k) {
+          const SubContact &p = f.subs[k], &q = s.subs[k];
+          QVERIFY(p.gap == q.gap && p.fn == q.fn && p.fs == q.fs && p.fs2 == q.fs2);
+          QVERIFY(p.un_prev == q.un_prev && p.force == q.force && p.flags == q.flags);
+        }
+      }
+      // Both kinds of contact were there (with the hint forced, all were tried as open).
+      QVERIFY(open >= 10);
+      if (!force_hint) QVERIFY(closed >= 10);
+    }
+  }
+
   // A join gives the joined pieces a new body and frame: every other contact's sub-contact points
   // stay where they were (blocks 2 and 3 side by side on a slab, block 4 across both).
   void joinKeepsSubContactPoints() {

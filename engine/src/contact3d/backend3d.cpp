@@ -68,8 +68,7 @@ void joint_forces3d(Model& m) {
       [&](size_t c0, size_t c1) {
         for (size_t i = c0; i < c1; ++i) {
           Contact3& c = m.contacts3[i];
-          update_plane3(m, c);
-          const double deepest = joint_forces3(m, c, turn_speed.data());
+          const double deepest = contact_cycle3(m, c, turn_speed.data());
           m.reads_vertices3[i] = !follows_face_plane(c, refresh);
           if (deepest > kOverlapLimit * max_contact_depth3(B, c.a, c.b))
             too_deep.flag(static_cast<uint32_t>(i));

@@ -194,14 +194,28 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   c.type = lo <= 1 ? kVertexFace : hi == 2 ? kEdgeEdge : lo == 2 ? kEdgeFace : kFaceFace;
 }
 
+// The law's open branch at a sub-contact of rigid faces (see joint_forces3): whether it stays
+// open, and if so what the law writes.
+bool stay_open(SubContact& s, double roundoff) {
+  const double un_now = without_roundoff(-s.gap + s.closure, roundoff) + s.dilation;
+  if (!stays_open(un_now, s.fn, s.flags)) return false;
+  s.fs = 0.0, s.fs2 = 0.0, s.un_prev = un_now, s.force = Vec3::Zero();
+  return true;
+}
+
 // Between rebuilds: each sub-contact's point rides on block a (in its frame), its gap is measured
-// afresh between the two facing faces' planes along the plane's normal.
-void follow(const Model& m, Contact3& c, const Vec3& n) {
+// afresh between the two facing faces' planes along the plane's normal. With try_open, for a
+// contact open last cycle, the law's open branch is tried at each sub-contact as its gap is
+// formed: returns true if they all stayed open (deepest: the deepest overlap, as the law's).
+bool follow(const Model& m, Contact3& c, const Vec3& n, bool try_open, double& deepest) {
   const Blocks3& B = m.blocks3;
   // A turn of the plane beyond a hundredth of a radian in a step (as when its candidate changes)
   // re-expresses the shear at once; the law keeps the tangent in the plane through smaller ones.
   if (c.normal.dot(n) < 0.99995) turn_shear_basis(c, n);
-  if (B.deformable[c.a] || B.deformable[c.b]) return follow_node_subcontacts(m, c, n);
+  if (B.deformable[c.a] || B.deformable[c.b]) {
+    follow_node_subcontacts(m, c, n);
+    return false;
+  }
   const RigidBody3& ba = frame_body(B, c);
   const Vec3 ma_n = B.world_normal[c.face_a], mb_n = B.world_normal[c.face_b];
   const double da = B.world_offset[c.face_a], db = B.world_offset[c.face_b];
@@ -214,14 +228,31 @@ void follow(const Model& m, Contact3& c, const Vec3& n) {
   const double g0 = da * ia - db * ib - kw.dot(ba.position);
   const Vec3 k = B.rotation[c.a].transpose() * kw;
   const double kx = k.x(), ky = k.y(), kz = k.z();
-  for (SubContact& s : c.subs) {
+  const auto gap = [&](const SubContact& s) {
     const Vec3& q = s.local;
-    s.gap = g0 - (kx * q.x() + ky * q.y() + kz * q.z());
+    return g0 - (kx * q.x() + ky * q.y() + kz * q.z());
+  };
+  auto s = c.subs.begin();
+  if (try_open && c.open) {
+    const double roundoff = m.roundoff_gap();
+    double d = 0.0;
+    for (; s != c.subs.end(); ++s) {
+      s->gap = gap(*s);
+      d = std::max(d, -s->gap);
+      if (!stay_open(*s, roundoff)) break;
+    }
+    if (s == c.subs.end()) {
+      deepest = d;
+      return true;
+    }
+    ++s;
   }
+  for (; s != c.subs.end(); ++s) s->gap = gap(*s);
+  return false;
 }
-}  // namespace
 
-void update_plane3(const Model& m, Contact3& c) {
+// update_plane3; with try_open, true if follow found every sub-contact open (see follow).
+bool move_plane(const Model& m, Contact3& c, bool try_open, double& deepest) {
   const Blocks3& B = m.blocks3;
   const uint32_t a = c.a, b = c.b;
   // The plane moves with the blocks: the same candidate, re-evaluated (a face's normal is read
@@ -230,20 +261,46 @@ void update_plane3(const Model& m, Contact3& c) {
   const double refresh = plane_refresh_drift(m);
   if (follows_face_plane(c, refresh)) {
     fit.normal = c.kind == kPlaneFaceB ? B.world_normal[c.ib] : Vec3(-B.world_normal[c.ia]);
-    follow(m, c, fit.normal);
+    return follow(m, c, fit.normal, try_open, deepest);
   } else {
     fit = evaluate_plane(B, a, b, c.kind, c.ia, c.ib);
     if (fit.gap <= -1e299) {
       fit = best_plane(B, a, b);
       c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
     }
-    if (c.drift < refresh) {
-      follow(m, c, fit.normal);
-    } else {
-      rebuild(m, c, fit);
-      c.drift = 0.0;
-    }
+    if (c.drift < refresh) return follow(m, c, fit.normal, try_open, deepest);
+    rebuild(m, c, fit);
+    c.drift = 0.0;
   }
+  return false;
+}
+
+// How far any point of one block may have moved against the other this step (translation plus
+// turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a hundredth
+// of the tolerance.
+double step_drift(const Model& m, const Contact3& c, const double* turn_speed) {
+  const Blocks3& B = m.blocks3;
+  const Vec3& va = B.body[static_cast<size_t>(B.master[c.a])].velocity;
+  const Vec3& vb = B.body[static_cast<size_t>(B.master[c.b])].velocity;
+  const double turn_a = turn_speed ? turn_speed[c.a] : B.turn_speed(c.a);
+  const double turn_b = turn_speed ? turn_speed[c.b] : B.turn_speed(c.b);
+  return m.dt * ((va - vb).norm() + turn_a + turn_b);
+}
+}  // namespace
+
+void update_plane3(const Model& m, Contact3& c) {
+  double deepest = 0.0;
+  move_plane(m, c, false, deepest);
+}
+
+double contact_cycle3(const Model& m, Contact3& c, const double* turn_speed) {
+  double deepest = 0.0;
+  if (!move_plane(m, c, true, deepest)) return joint_forces3(m, c, turn_speed);
+  // The law's results with every sub-contact open.
+  c.force = Vec3::Zero(), c.torque_a = Vec3::Zero(), c.torque_b = Vec3::Zero();
+  c.force_mag = 0.0;
+  c.drift += step_drift(m, c, turn_speed);
+  return deepest;
 }
 
 double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
@@ -333,14 +390,11 @@ double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
   c.force = force, c.torque_a = torque, c.force_mag = load;
   // b's torque about its own centroid: -sum (p - xb) x f = -(torque_a - xab x F).
   c.torque_b = ready ? Vec3(xab.cross(c.force) - c.torque_a) : Vec3::Zero();
-  // How far any point of one block may have moved against the other this step (translation
-  // plus turning at the blocks' reach): the sub-contacts are rebuilt once that adds up to a
-  // hundredth of the tolerance.
-  // A deformable block's nodes move on their own: the fastest sub-contact counts as well.
-  const double turn_a = turn_speed ? turn_speed[a] : B.turn_speed(a);
-  const double turn_b = turn_speed ? turn_speed[b] : B.turn_speed(b);
-  c.drift += dt * ((ba.velocity - bb.velocity).norm() + turn_a + turn_b);
+  // The step's drift; a deformable block's nodes move on their own: the fastest sub-contact
+  // counts as well.
+  c.drift += step_drift(m, c, turn_speed);
   if (deformable) c.drift += dt * std::sqrt(fastest);
+  c.open = !ready && !deformable;
   return deepest;
 }
 

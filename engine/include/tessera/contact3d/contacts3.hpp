@@ -94,6 +94,9 @@ struct Contact3 {
   // The faces of a and b facing the plane (global face indices).
   uint32_t face_a = 0, face_b = 0;
   uint8_t type = kFaceFace;
+  // Every sub-contact stayed open last cycle (a hint: the plane's pass tries the law's open
+  // branch for them all first, and leaves the law nothing to do if it holds).
+  bool open = false;
   Vec3 normal = Vec3::UnitZ();
   // The plane's first tangent, in which the sub-contacts' shear is kept (t2 = normal x t1); zero
   // until the first rebuild sets it.

@@ -34,5 +34,8 @@ inline double plane_refresh_drift(const Model& m) {
 // turn_speed: each block's Blocks3::turn_speed, if the caller formed them once for all its
 // contacts (else formed here).
 double joint_forces3(const Model& m, Contact3& c, const double* turn_speed = nullptr);
+// A contact's cycle, update_plane3 then joint_forces3, with the same results: a pair of rigid
+// blocks whose sub-contacts all stay open (the wall's head joints) is done in the plane's pass.
+double contact_cycle3(const Model& m, Contact3& c, const double* turn_speed);
 
 }  // namespace tessera
