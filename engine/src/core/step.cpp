@@ -39,9 +39,9 @@ void measure_motion(Model& m, const BlockMotion& bm, const ZoneMotion& zm) {
     if (!std::isfinite(zm.ratio)) max_drift = zm.ratio;
   }
   // Cable and liner nodes count as well: blocks at rest on creeping support are not solved.
-  if (!m.cables.empty()) m.ratio = std::max(m.ratio, m.cables.balance.ratio());
-  if (!m.cables3.empty()) m.ratio = std::max(m.ratio, m.cables3.balance.ratio());
-  if (!m.liners.empty()) m.ratio = std::max(m.ratio, m.liners.balance.ratio());
+  if (!m.cables.empty()) m.ratio = std::max(m.ratio, m.cables.balance.ratio(m.mean_applied));
+  if (!m.cables3.empty()) m.ratio = std::max(m.ratio, m.cables3.balance.ratio(m.mean_applied));
+  if (!m.liners.empty()) m.ratio = std::max(m.ratio, m.liners.balance.ratio(m.mean_applied));
   if (max_drift > 0.5 * m.tolerance()) m.detection_due = true;
   if (!std::isfinite(max_ub) || !std::isfinite(max_drift) || !(bm.jump[worst] < 0.1))
     throw_diverged(m, m.dim == 3 ? m.blocks3.id[worst] : m.blocks.id[worst]);

@@ -118,9 +118,13 @@ void update(Model& m, CablesT<D>& K, double alpha) {
       if (i + 1 < n1) f += K.axial[i] * (K.pos[i + 1] - K.pos[i]).normalized();
       if (i > n0) f -= K.axial[i - 1] * (K.pos[i] - K.pos[i - 1]).normalized();
       const V vh = anchor_velocity(m, K.host[i]);
+      // The node's round-off: its stiffness times the model's round-off length. A force within
+      // it is none (an unloaded cable's noise handed to a free block would be all its load).
+      const double rest = K.rest[i + 1 < n1 ? i : i - 1];
+      const double noise = (2.0 * p.ea / rest + p.kbond * K.bonded[i]) * m.roundoff_gap();
       if (c.head && i == n0) {
         // A faceplate: the node moves with its rock and hands it the segment's pull.
-        K.vel[i] = vh.dot(t), K.host_force[i] = f, K.bond[i] = 0.0;
+        K.vel[i] = vh.dot(t), K.host_force[i] = f.norm() > noise ? f : V::Zero(), K.bond[i] = 0.0;
         continue;
       }
       // The grout: elastic slip, capped at the bond strength (rising with confinement).
@@ -138,11 +142,11 @@ void update(Model& m, CablesT<D>& K, double alpha) {
       }
       K.bond[i] = K.bonded[i] > 0.0 ? s : 0.0;
       const double grout = K.bond[i] * K.bonded[i];
-      K.host_force[i] = -grout * t;
+      K.host_force[i] = std::abs(grout) > noise ? V(-grout * t) : V::Zero();
       // The node's motion along the axis; the host's motion across it carries the node along.
       const double fa = f.dot(t) + grout;
       if (K.inertia[i] > 0.0) {
-        K.balance.add(std::abs(fa), std::abs(f.dot(t)) + std::abs(grout));
+        K.balance.add(std::abs(fa), std::abs(f.dot(t)) + std::abs(grout), noise);
         K.vel[i] += dt * locally_damped(fa, K.vel[i], alpha) / K.inertia[i];
       }
       K.slip[i] += dt * (vh.dot(t) - K.vel[i]);

@@ -107,9 +107,13 @@ void update_liners(Model& m, double alpha) {
     }
     L.shear[i] = sh;
     const Vec2 f_int = -L.length[i] * (pr * nrm + sh * s);
-    L.host_force[i] = -f_int;
+    // The node's round-off: its stiffness (to a factor of a few: the interface and two
+    // elements' axial springs) times the model's round-off length. A force within it is none.
+    const double noise =
+        ((p.kn + p.ks) * L.length[i] + 4.0 * p.ea / L.length[i]) * m.roundoff_gap();
+    L.host_force[i] = f_int.norm() > noise ? Vec2(-f_int) : Vec2::Zero();
     const Vec2 f = L.force[i] + f_int;
-    if (L.mass[i] > 0.0) L.balance.add(f.norm(), L.force[i].norm() + f_int.norm());
+    if (L.mass[i] > 0.0) L.balance.add(f.norm(), L.force[i].norm() + f_int.norm(), noise);
     L.force[i] = f;
     if (L.mass[i] <= 0.0) continue;
     for (int c = 0; c < 2; ++c)
