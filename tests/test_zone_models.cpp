@@ -324,6 +324,44 @@ class TestZoneModels : public QObject {
     }
   }
 
+  // Drucker-Prager, matched to Mohr-Coulomb in plane strain (FLAC's q_phi = 3 tan(phi) /
+  // sqrt(9 + 12 tan^2 phi) on the mean stress, k_phi = 3 c / sqrt(..)): with associated flow a
+  // biaxial test (2D, plane strain; the out-of-plane stress finds its place) fails at the
+  // Mohr-Coulomb strength, and a triaxial one (3D, sigma_2 = sigma_3 = p) where
+  // (s1 - p) / sqrt(3) - q_phi (s1 + 2 p) / 3 = k_phi: 6.297 MPa at phi = 30 degrees, c = 1 MPa,
+  // p = 2 MPa. (An independent check found the friction term a third of FLAC's: 4.76 and
+  // 4.20 MPa.)
+  void druckerPragerMatchesMohrCoulombInPlaneStrain() {
+    for (const double phi : {20.0, 30.0, 40.0}) {
+      ZoneProperties p = base("drucker-prager");
+      p.friction = phi, p.dilation = phi, p.cohesion = 1e6, p.tension = 1e7;
+      p.finalize();
+      const double s3 = 2e6, t = std::tan(phi * kDeg), r = std::sqrt(9 + 12 * t * t);
+      const double q = 3 * t / r, k = 3 * 1e6 / r;
+      const double want_3d =
+          (k + s3 / std::sqrt(3.0) + 2 * s3 * q / 3) / (1 / std::sqrt(3.0) - q / 3);
+      for (int dims : {2, 3}) {
+        Point pt{p, {-s3, -s3, 0, -s3, 0, 0}};
+        const int axial = dims == 2 ? YY : ZZ;
+        const std::vector<int> held =
+            dims == 2 ? std::vector<int>{XX, XY} : std::vector<int>{XX, YY, XY, YZ, XZ};
+        const std::vector<double> target =
+            dims == 2 ? std::vector<double>{-s3, 0} : std::vector<double>{-s3, -s3, 0, 0, 0};
+        double peak = 0;
+        for (int i = 0; i < 4000; ++i) {
+          pt.step({{axial, -5e-6}}, held, target);
+          peak = std::max(peak, -at(pt.s, axial));
+        }
+        const double want = dims == 2 ? coulomb(s3, 1e6, phi) : want_3d;
+        qInfo("phi %.0f, %dD: peak %.4f MPa, closed form %.4f MPa", phi, dims, peak / 1e6,
+              want / 1e6);
+        QVERIFY(pt.state & kShearNow);
+        // In plane strain the out-of-plane stress reaches its place as the flow sets in.
+        QVERIFY(std::abs(peak / want - 1) < (dims == 2 ? 1e-4 : 1e-6));
+      }
+    }
+  }
+
   // Biaxial (2D, plane strain) and triaxial (3D) strength at 2 MPa confinement against the
   // angle beta between the axis and the joint's normal: Jaeger where the joint slips first,
   // Mohr-Coulomb of the matrix where it does not (beta below phi_j, near 90 degrees).

@@ -130,7 +130,7 @@ class TestZones : public QObject {
     const double mean = (s.xx + s.yy + s.zz) / 3;
     const double dx = s.xx - mean, dy = s.yy - mean, dz = s.zz - mean;
     const double tau = std::sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + s.xy * s.xy);
-    QVERIFY(std::abs(tau + tp / r * mean - 3 * 1e6 / r) < 1e-6 * 1e6);
+    QVERIFY(std::abs(tau + 3 * tp / r * mean - 3 * 1e6 / r) < 1e-6 * 1e6);
   }
 
   // Stretched equally in x and y, Drucker-Prager holds the mean stress at the tensile strength.

@@ -194,9 +194,9 @@ class MohrCoulombModel final : public ZoneModel {
 };
 
 // Drucker-Prager (FLAC's form): fs = tau + q_phi sigma - k_phi with tau = sqrt(J2) and sigma
-// the mean stress; matched to Mohr-Coulomb in plane strain
-// (q = tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3c / sqrt(9 + 12 tan^2 phi)); tension cut-off on
-// the mean stress.
+// the mean stress; matched to Mohr-Coulomb in plane strain with associated flow
+// (q = 3 tan(phi) / sqrt(9 + 12 tan^2 phi), k = 3c / sqrt(9 + 12 tan^2 phi): the textbook
+// sqrt(J2) = alpha I1 + k with I1 = 3 sigma); tension cut-off on the mean stress.
 class DruckerPragerModel final : public ZoneModel {
  public:
   const char* name() const override { return "drucker-prager"; }
@@ -205,9 +205,9 @@ class DruckerPragerModel final : public ZoneModel {
     state &= kShearPast | kTensionPast;
     elastic_step(p, de, s);
     const double tphi = std::tan(p.friction * kDeg), tpsi = std::tan(p.dilation * kDeg);
-    const double qphi = tphi / std::sqrt(9 + 12 * tphi * tphi);
+    const double qphi = 3 * tphi / std::sqrt(9 + 12 * tphi * tphi);
     const double kphi = 3 * p.cohesion / std::sqrt(9 + 12 * tphi * tphi);
-    const double qpsi = tpsi / std::sqrt(9 + 12 * tpsi * tpsi);
+    const double qpsi = 3 * tpsi / std::sqrt(9 + 12 * tpsi * tpsi);
     const double mean = (s.xx + s.yy + s.zz) / 3.0;
     const double dx = s.xx - mean, dy = s.yy - mean, dz = s.zz - mean;
     const double tau =
