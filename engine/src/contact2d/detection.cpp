@@ -47,8 +47,7 @@ std::vector<Box> block_boxes(const Blocks& B, double grow) {
 
 // Candidate pairs (lo, hi) whose boxes overlap, sorted. Blocks go into the cells of a uniform
 // grid sized by the median block; a block covering many cells is tested against all others.
-std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& boxes,
-                                                       const std::vector<uint8_t>& fixed) {
+std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& boxes) {
   const size_t n = boxes.size();
   std::vector<std::pair<uint32_t, uint32_t>> pairs;
   if (n < 2) return pairs;
@@ -74,7 +73,6 @@ std::vector<std::pair<uint32_t, uint32_t>> broad_phase(const std::vector<Box>& b
   }
   std::sort(entries.begin(), entries.end());
   auto keep = [&](uint32_t a, uint32_t b) {
-    if (fixed[a] && fixed[b]) return;
     if (overlap(boxes[a], boxes[b])) pairs.emplace_back(std::min(a, b), std::max(a, b));
   };
   for (size_t s = 0; s < entries.size();) {
@@ -198,11 +196,9 @@ void detect_contacts(Model& m) {
   for (size_t b = 0; b < n; ++b) B.update_world(b);
   update_deformable_world(m);
   std::vector<Box> boxes = block_boxes(B, 0.5 * tol);
-  // Fixed blocks do not meet each other; a deformable block's nodes move although its rigid
-  // motion is held.
-  std::vector<uint8_t> fixed(n);
-  for (size_t b = 0; b < n; ++b) fixed[b] = B.fixity[b] == kFixAll && !B.deformable[b];
-  auto pairs = broad_phase(boxes, fixed);
+  // Held blocks meet each other too: one may be driven at a velocity into the other, and a
+  // bond made now must be there when either is freed.
+  auto pairs = broad_phase(boxes);
   // Narrow phase, pair by pair in sorted order, run again for each use rather than holding a
   // list of finds (16 bytes a contact at the pass's peak): to check that joint properties apply
   // to each new contact (where that can fail), to learn where each find's contact was, and,
@@ -372,8 +368,7 @@ std::string find_overlap2d(const Model& m) {
   const Blocks& B = m.blocks;
   const double tol = m.tolerance();
   const std::vector<Box> boxes = block_boxes(B, 0.0);
-  std::vector<uint8_t> none(B.size(), 0);
-  for (const auto& [lo, hi] : broad_phase(boxes, none)) {
+  for (const auto& [lo, hi] : broad_phase(boxes)) {
     const auto pa = B.world_polygon(lo), pb = B.world_polygon(hi);
     // Any vertex deeper than the tolerance inside the other block, or a centroid inside it.
     auto deep_inside = [&](const std::vector<Vec2>& pts, const std::vector<Vec2>& poly) {

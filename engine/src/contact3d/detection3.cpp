@@ -67,8 +67,9 @@ void detect_contacts3(Model& m) {
   std::vector<uint8_t> kept(old.size(), 0);
   for (const auto& [lo, hi] : broad_phase3(block_boxes3(B, 0.5 * tol))) {
     const auto mlo = static_cast<size_t>(B.master[lo]), mhi = static_cast<size_t>(B.master[hi]);
-    // Pieces of one body never touch; nor do two held bodies (a deformable block is not held).
-    if (mlo == mhi || (B.held(mlo) && B.held(mhi))) continue;
+    // Pieces of one body never touch. (Held bodies do: one may be driven into the other, and a
+    // bond made now must be there when either is freed.)
+    if (mlo == mhi) continue;
     const PlaneFit fit = best_plane(B, lo, hi);
     if (fit.gap > tol) continue;
     while (j < old.size() && std::make_pair(old[j].a, old[j].b) < std::make_pair(lo, hi)) ++j;
