@@ -267,6 +267,37 @@ class TestGui : public QObject {
     QCOMPARE(scene.bars[0].colour, ramp(1.0));  // the ordinary contacts at the top of the scale
   }
 
+  // A liner ring carrying nothing in fixed rock: its caption counts its 26 nodes (not the
+  // closing point again: it said 27), none at a capacity, and the nodes open from the rock are
+  // drawn elastic and counted as open (they were drawn orange, "yielding"; an independent check).
+  void unloadedLinerIsNotYielding() {
+    Interpreter in(dir_.filePath("liner_out").toStdString());
+    int n = 0;
+    for (const char* line :
+         {"round 0.01", "material define rock density=2500",
+          "joint define j kn=1e10 ks=1e10 friction=30", "joint assign j",
+          "region -5,-5 5,5 group=rock material=rock",
+          "tunnel circle centre=0,0 radius=1 segments=24 name=t group=t", "delete group=t",
+          "fix all", "liner joints=t e=25e9 nu=0.2 thickness=0.2 kn=1e10 ks=1e10 name=L",
+          "step 50"})
+      in.execute(line, "test", ++n);
+    const Model& m = in.model();
+    size_t open = 0;
+    for (size_t i = 0; i < m.liners.size(); ++i) open += (m.liners.state[i] & kLinerOpen) != 0;
+    const Scene scene = build_scene(make_snapshot(m, "", {}), ViewOptions{});
+    const std::string want =
+        "0 of 26 nodes at a capacity or slipping, " + std::to_string(open) + " open from the rock";
+    QVERIFY2(scene.caption.find(want) != std::string::npos, scene.caption.c_str());
+    QVERIFY(open > 0);
+    int drawn = 0;
+    for (const SceneBar& bar : scene.bars)
+      if (bar.support >= 0) {
+        QCOMPARE(bar.colour, (Rgb{170, 0, 170}));
+        ++drawn;
+      }
+    QCOMPARE(drawn, 26);  // the ring's elements
+  }
+
   // After excavation the opening is empty in the window, as in the batch figures: the pixels at
   // the tunnel's centre and around it, within the radius, are background. The axes are labelled
   // at round values, and the model, zoomed in, stays out of the colour bar's margin.

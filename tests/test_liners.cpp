@@ -3,6 +3,7 @@
 // files and bad input.
 #include <QtTest>
 #include <cmath>
+#include <set>
 
 #include "support.hpp"
 #include "tessera/io/state_io.hpp"
@@ -112,6 +113,26 @@ class TestLiners : public QObject {
     r.run("delete at=0,1.2");  // the rock over the crown
     QCOMPARE(r.model().liners.size(), size_t(0));
     QCOMPARE(r.model().histories.series[0].element, -1);
+  }
+  // Rock settled before it is dug: blocks have moved along the joint the wall crosses, so the
+  // wall's ends on either side are microns apart. The liner goes in (it was refused: "the wall
+  // is broken between its edges", found by an independent check), as a closed ring on the
+  // rock of both sides.
+  void linedAfterTheRockHasSettled() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "region -5,-5 5,5 group=rock material=rock\ncrack -5,0.3 5,1.3 name=J\n"
+        "tunnel circle centre=0,0 radius=1 segments=24 name=t group=t\nfix at=0,-3\n"
+        "gravity 0 -9.81\nstep 100\ndelete group=t\n"
+        "liner joints=t ea=1e9 ei=1e6 kn=1e10 ks=1e10 name=L\nstep 10\n");
+    const Liners& L = r.model().liners;
+    QCOMPARE(L.liners.size(), size_t(1));
+    QVERIFY(L.liners[0].closed);
+    std::set<int32_t> hosts;
+    for (size_t i = 0; i < L.size(); ++i) hosts.insert(L.host[i].block);
+    QVERIFY(hosts.size() >= 2);
   }
   void badLinersAreNamed_data() {
     QTest::addColumn<QString>("line");

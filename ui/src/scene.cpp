@@ -352,13 +352,19 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
   const double w = 0.004 * size;
   double fmax = 0.0, cmax = 0.0;
   size_t yielded = 0, crossings = 0, bolts = 0, cables = 0, slipping = 0, nodes = 0;
-  size_t liners = 0, liner_nodes = 0, liner_yield = 0;
+  size_t liners = 0, liner_nodes = 0, liner_yield = 0, liner_open = 0;
   double lmax = 0.0;
   for (const SnapshotBolt& b : s.bolts) {
     if (b.liner) {
       ++liners;
-      for (size_t k = 0; k < b.points.size(); ++k)
-        ++liner_nodes, liner_yield += b.state[k] != 0, lmax = std::max(lmax, std::abs(b.axial[k]));
+      // A closed ring's last point is its first node again.
+      const bool ring = b.points.size() > 2 && b.block.front() == b.block.back() &&
+                        b.points.front() == b.points.back();
+      for (size_t k = 0; k + (ring ? 1 : 0) < b.points.size(); ++k) {
+        ++liner_nodes, lmax = std::max(lmax, std::abs(b.axial[k]));
+        liner_yield += (b.state[k] & kBoltAxialYield) != 0;
+        liner_open += (b.state[k] & kLinerNodeOpen) != 0;
+      }
       continue;
     }
     (b.cable ? cables : bolts) += 1;
@@ -440,7 +446,8 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
                    (f ? "coloured by axial force (tension positive); "
                       : "purple elastic, orange at a capacity or slipping on the rock; ") +
                    std::to_string(liner_yield) + " of " + std::to_string(liner_nodes) +
-                   " nodes yielding or slipping; largest thrust " + number(lmax) + " N/m";
+                   " nodes at a capacity or slipping, " + std::to_string(liner_open) +
+                   " open from the rock; largest thrust " + number(lmax) + " N/m";
 }
 
 // 3D support (cables): drawn as in 2D from their projected nodes, over the faces (it lies inside

@@ -362,13 +362,17 @@ void copy_bolts(const Model& m, Snapshot& s) {
   for (const Liner& l : L.liners) {
     SnapshotBolt o;
     o.name = l.name, o.cable = true, o.liner = true;
+    // (A closed ring's first node again at the end, to draw its last element.)
     for (uint32_t k = 0; k < l.count + (l.closed ? 1u : 0u); ++k) {
       const uint32_t i = l.first + k % l.count;
       o.points.push_back(liner_position(L, i));
       o.block.push_back(L.host[i].block);
       o.axial.push_back(L.next(i) >= 0 ? L.axial[i] : 0.0);
       o.shear.push_back(0.0);
-      o.state.push_back(L.state[i] ? kBoltAxialYield : 0);
+      // At a capacity (thrust or moment) or slipping on the rock: yielding; open: drawn elastic.
+      const bool yielding = L.state[i] & (kLinerSlip | kLinerHinge | kLinerThrustYield);
+      o.state.push_back(static_cast<uint8_t>((yielding ? kBoltAxialYield : 0) |
+                                             (L.state[i] & kLinerOpen ? kLinerNodeOpen : 0)));
     }
     s.bolts.push_back(std::move(o));
   }

@@ -1,5 +1,6 @@
 // Placing a liner on an opening's wall, and keeping it through block deletion.
 #include <cmath>
+#include <sstream>
 
 #include "tessera/core/model.hpp"
 #include "tessera/core/step.hpp"
@@ -31,13 +32,19 @@ size_t install_liner(Model& m, const std::string& name, int tag, double a0, doub
     }
     std::rotate(edges.begin(), edges.begin() + static_cast<long>(start), edges.end());
   }
-  // The chain must be unbroken: each edge starts where the one before ends.
-  const double tol = 1e-6 * std::max(1.0, (edges.front().to - edges.front().from).norm());
+  // The chain must be unbroken: each edge starts where the one before ends, to within the
+  // contact tolerance (blocks that have moved along a joint since they were cut, as in a model
+  // settled before it is dug, leave their walls' ends apart by that much).
+  const double tol = std::max(m.tolerance(), 1e-6 * (edges.front().to - edges.front().from).norm());
   for (size_t k = 1; k < edges.size() + (ring ? 1 : 0); ++k) {
     const WallEdge &a = edges[k - 1], &b = edges[k % edges.size()];
-    if ((a.to - b.from).norm() > tol)
-      throw ModelError("liner '" + name +
-                       "': the wall is broken between its edges (is all of it excavated?)");
+    if ((a.to - b.from).norm() > tol) {
+      std::ostringstream msg;
+      msg << "liner '" << name << "': the wall is broken at x=" << a.to.x() << ", y=" << a.to.y()
+          << " (its ends " << (a.to - b.from).norm() << " m apart, beyond the contact tolerance "
+          << m.tolerance() << " m; is all of the opening excavated?)";
+      throw ModelError(msg.str());
+    }
   }
   // A node at each vertex, on the rock of the edge that starts there (the last: the one ending).
   const size_t n = ring ? edges.size() : edges.size() + 1;

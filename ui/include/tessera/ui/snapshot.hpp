@@ -70,8 +70,10 @@ struct SnapshotBolt {
   std::vector<Vec3> points3;  // 3D models' cables (points: x and y)
   std::vector<int> block;
   std::vector<double> axial, shear;
-  std::vector<uint8_t> state;
+  std::vector<uint8_t> state;  // BoltState bits; a liner's node also kLinerNodeOpen
 };
+// A liner node open from the rock (its interface in tension, at no capacity): drawn elastic.
+constexpr uint8_t kLinerNodeOpen = 0x80;
 
 // A named list of properties, for the model tree and property panel.
 struct Entry {
