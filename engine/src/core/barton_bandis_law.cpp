@@ -85,7 +85,7 @@ class BartonBandisLaw final : public JointLaw {
     fs.scale_to(strength, mag);
     s.flags |= kSlipping;
     s.plastic += plastic;
-    s.dilation += std::tan(dilation * kDeg) * plastic;
+    s.dilate(std::tan(dilation * kDeg) * plastic * s.dilation_direction(dus, dus2));
   }
 
   // The mobilised friction and dilation angles (degrees) at normal stress sn after plastic

@@ -81,8 +81,8 @@ inline double coulomb_update(const JointProperties& p, bool residual_law, double
         plane ? std::abs(s.shear_disp)
               : std::sqrt(s.shear_disp * s.shear_disp + s.shear_disp2 * s.shear_disp2);
     if (p.tan_dilation > 0.0 && (p.dilation_limit <= 0.0 || travel < p.dilation_limit))
-      s.dilation += p.tan_dilation *
-                    (Plane || dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2));
+      s.dilate(p.tan_dilation * s.dilation_direction(dus, dus2) *
+               (Plane || dus2 == 0.0 ? std::abs(dus) : std::sqrt(dus * dus + dus2 * dus2)));
     return s.shear();
   }
   return mag;

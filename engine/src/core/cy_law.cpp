@@ -110,7 +110,7 @@ class CyLaw final : public JointLaw {
     // Dilation at the angle the stress ratio stands above basic friction.
     if (plastic > 0.0 && s.fn > 0.0) {
       const double i = std::atan(fs.norm() * p.strength_divisor / s.fn) - p.friction * kDeg;
-      if (i > 0.0) s.dilation += std::tan(i) * plastic;
+      if (i > 0.0) s.dilate(std::tan(i) * plastic * s.dilation_direction(dus, dus2));
     }
   }
 };

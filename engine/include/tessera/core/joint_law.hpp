@@ -10,6 +10,7 @@
 // value kn L un, so it cannot drift from the overlap.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -96,6 +97,14 @@ struct JointState {
   double shear_travel() const {
     return std::sqrt(shear_disp * shear_disp + shear_disp2 * shear_disp2);
   }
+  // Dilation follows the direction of shearing (as 3DEC's): a step of slip (dus, dus2, already
+  // in the totals) that takes the joint away from where its shear displacement started opens
+  // it, one that brings it back closes it (+1 or -1), so that cyclic shear does not pump it open.
+  double dilation_direction(double dus, double dus2) const {
+    return dus * shear_disp + dus2 * shear_disp2 >= 0.0 ? 1.0 : -1.0;
+  }
+  // Adds a dilation increment (signed), never closing the joint past its undilated state.
+  void dilate(double increment) { dilation = std::max(0.0, dilation + increment); }
 };
 
 class JointLaw {
