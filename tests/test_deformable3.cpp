@@ -368,6 +368,45 @@ class TestDeformable3 : public QObject {
     QCOMPARE(lowest(), stopped);
   }
 
+  // `boundary vz=` drives the top's nodes down and leaves them free across (a smooth platen):
+  // an elastic cube on rollers, pressed 0.1 mm, spreads across at nu times its axial strain,
+  // top as well as bottom. (`boundary velocity=0,0,-v`, all three axes, held the top from
+  // spreading; an independent check's triaxial test read 20% over Mohr-Coulomb's strength.)
+  void boundaryVelocityOfOneAxis() {
+    ScriptRun r;
+    r.run(
+        "dimension 3\nmaterial define rock density=2500 E=10e9 nu=0.25\n"
+        "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\ngravity 0 0 0\n"
+        "boundary fix=z z=-0.01,0.01\nboundary fix=x x=-0.01,0.01\nboundary fix=y y=-0.01,0.01\n"
+        "boundary vz=-1e-3 z=0.99,1.01\nstep 1000\n");
+    const Model& m = r.model();
+    const Continuum3& c = m.continuum3;
+    size_t top = 0;
+    for (size_t n = 0; n < c.node_count(); ++n)
+      if (c.pos0[n].z() > 0.99) {
+        // (Those on the rollers at x = 0 or y = 0 keep them.)
+        const bool roller = c.pos0[n].x() < 0.01 || c.pos0[n].y() < 0.01;
+        if (!roller) QCOMPARE(int(c.fixity[n]), int(node_fix_bit(2)));
+        QCOMPARE(c.fixed_vel[n].z(), -1e-3);
+        ++top;
+      }
+    QVERIFY(top > 4);
+    // Held still at 1000 steps' travel, then settled.
+    r.run("boundary vz=0 z=0.99,1.01\nsolve ratio=1e-7 cycles=20000\n");
+    double pressed = 0.0, spread_top = 0.0, spread_bottom = 0.0;
+    for (size_t n = 0; n < c.node_count(); ++n) {
+      const Vec3 d = c.pos[n] - c.pos0[n];
+      if (c.pos0[n].z() > 0.99) pressed = -d.z();
+      if (c.pos0[n].x() > 0.99 && c.pos0[n].z() > 0.99) spread_top = d.x();
+      if (c.pos0[n].x() > 0.99 && c.pos0[n].z() < 0.01) spread_bottom = d.x();
+    }
+    qInfo("pressed %.4g mm: spread %.4g mm at the top, %.4g mm at the bottom (nu e: %.4g)",
+          pressed * 1e3, spread_top * 1e3, spread_bottom * 1e3, 0.25 * pressed * 1e3);
+    QVERIFY(pressed > 1e-5);
+    QVERIFY(std::abs(spread_top / (0.25 * pressed) - 1) < 1e-3);
+    QVERIFY(std::abs(spread_bottom / (0.25 * pressed) - 1) < 1e-3);
+  }
+
   // CGAL's mesher can leave a flat zone on a block's surface (four nodes on one face). The
   // Salencon slab zoned at 0.2 a had one on the opening's wall (19,073 zones, smallest dihedral
   // angle 0.000 degrees): its nodes had no stable step, froze under density scaling, and the

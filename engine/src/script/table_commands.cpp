@@ -122,8 +122,9 @@ bool Interpreter::follow_table(const Args& a) {
     return std::any_of(a.keys.begin(), a.keys.end(),
                        [&](const auto& kv) { return kv.first == key; });
   };
-  if (c == "boundary" && !has("velocity") && !has("stress") && !has("pressure"))
-    fail("table= goes with boundary velocity=, stress= or pressure=");
+  const bool velocity = has("velocity") || has("vx") || has("vy") || has("vz");
+  if (c == "boundary" && !velocity && !has("stress") && !has("pressure"))
+    fail("table= goes with boundary velocity= (or vx= vy= vz=), stress= or pressure=");
   if (!tables_.count(it->second)) {
     std::vector<std::string> names;
     for (const auto& [n, t] : tables_) names.push_back(n);
@@ -135,7 +136,7 @@ bool Interpreter::follow_table(const Args& a) {
   t.args.used.assign(t.args.keys.size(), false);
   t.table = it->second, t.file = file_, t.line = line_;
   // Stress and pressure add loads each time they run; the rest set a value.
-  t.incremental = c == "boundary" && !has("velocity");
+  t.incremental = c == "boundary" && !velocity;
   t.applied = tables_.at(t.table).at(model_.time);
   run_scaled(t, t.applied);
   timed_.push_back(std::move(t));

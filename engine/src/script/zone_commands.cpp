@@ -218,7 +218,20 @@ void Interpreter::cmd_boundary(Args& a) {
     fail("there are no zones: 'zone generate' makes blocks deformable");
   const NodeBox box = node_box(a);
   std::string fix, vel, stress, joints;
-  const bool has_fix = take(a, "fix", fix), has_vel = take(a, "velocity", vel);
+  const bool has_fix = take(a, "fix", fix);
+  bool has_vel = take(a, "velocity", vel);
+  // vx= vy= vz=: only the axes named are driven (a smooth platen), the others left as they are.
+  uint8_t axis_vel_bits = 0;
+  double axis_vel[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < (three ? 3 : 2); ++k)
+    if (take_num(a, std::string("v") + "xyz"[k], axis_vel[k]))
+      axis_vel_bits |= static_cast<uint8_t>(1u << k);
+  if (axis_vel_bits) {
+    if (has_vel)
+      fail("give velocity= (all axes) or vx= vy=" + std::string(three ? " vz=" : "") +
+           " (those named), not both");
+    has_vel = true;
+  }
   bool has_stress = take(a, "stress", stress);
   // A pressure P is the stress -P on every axis: on the wall of an opening it pushes into the rock.
   double pressure = 0;
@@ -241,10 +254,11 @@ void Interpreter::cmd_boundary(Args& a) {
   if (!a.words.empty()) fail("unexpected word '" + a.words[0] + "'");
   done(a);
   if (int(has_fix) + int(has_vel) + int(has_stress) + int(free) != 1)
-    fail(three ? "write one of 'boundary fix=x|y|z|xy|xz|yz|xyz', 'boundary velocity=VX,VY,VZ', "
+    fail(three ? "write one of 'boundary fix=x|y|z|xy|xz|yz|xyz', 'boundary velocity=VX,VY,VZ' "
+                 "(or vx= vy= vz=), "
                  "'boundary stress=SXX,SYY,SZZ,SXY,SYZ,SXZ' or 'boundary free', with x=X0,X1 "
                  "y=Y0,Y1 z=Z0,Z1"
-               : "write one of 'boundary fix=x|y|xy', 'boundary velocity=VX,VY', "
+               : "write one of 'boundary fix=x|y|xy', 'boundary velocity=VX,VY' (or vx= vy=), "
                  "'boundary stress=SXX,SYY,SXY' or 'boundary free', with x=X0,X1 y=Y0,Y1");
   if (has_stress) {
     const auto parts = split_top_level(stress);
@@ -272,12 +286,16 @@ void Interpreter::cmd_boundary(Args& a) {
                : "write fix=x, fix=y or fix=xy");
   size_t count = 0;
   if (three) {
-    const Vec3 v = has_vel ? point3(vel) : Vec3::Zero();
-    if (has_vel) bits = 7;
+    const Vec3 v = axis_vel_bits ? Vec3(axis_vel[0], axis_vel[1], axis_vel[2])
+                   : has_vel     ? point3(vel)
+                                 : Vec3::Zero();
+    if (has_vel) bits = axis_vel_bits ? axis_vel_bits : 7;
     count = set_nodes(model_.continuum3, box, free, bits, has_vel ? &v : nullptr);
   } else {
-    const Vec2 v = has_vel ? point(vel) : Vec2::Zero();
-    if (has_vel) bits = kFixX | kFixY;
+    const Vec2 v = axis_vel_bits ? Vec2(axis_vel[0], axis_vel[1])
+                   : has_vel     ? point(vel)
+                                 : Vec2::Zero();
+    if (has_vel) bits = axis_vel_bits ? axis_vel_bits : kFixX | kFixY;
     count = set_nodes(model_.continuum, box, free, bits, has_vel ? &v : nullptr);
   }
   if (!count) fail("no node lies in that box");
