@@ -135,6 +135,31 @@ class TestScriptErrors : public QObject {
                                "zone generate edge=0.5\nload block=1 fx=1"),
                 "test:7: block 1 is deformable: load its nodes"));
   }
+  // Messages an independent check found misleading: a missing kn= blamed a given ks= as not a
+  // keyword; a bad elastic constant or strength suggested a model name; a bad K named the
+  // material twice and said constants were missing; a second 'zone generate' did nothing and
+  // said nothing; a one-number box range was "not a point".
+  void misleadingMessagesAreStraight() {
+    QVERIFY(has(error_of("joint define k ks=1e10 friction=30"), "test:1: joint 'k' needs kn="));
+    QVERIFY(error_of("joint define k ks=1e10 friction=30").find("not a keyword") ==
+            std::string::npos);
+    const std::string mat = "material define rock density=2000 ";
+    QVERIFY(has(error_of(mat + "E=-1e9 nu=0.25"),
+                "test:1: material 'rock': Young's modulus must be positive"));
+    QVERIFY(error_of(mat + "E=-1e9 nu=0.25").find("did you mean") == std::string::npos);
+    const auto k = error_of(mat + "K=-1e9 G=1e9");
+    QVERIFY(has(k, "material 'rock': elastic constants must be positive (bulk modulus K -1e+09"));
+    QVERIFY(k.find("zone material") == std::string::npos);
+    QVERIFY(has(error_of(mat + "E=1e9 nu=0.25 model=mohr-colomb"),
+                "'mohr-colomb' is not a zone model (did you mean 'mohr-coulomb'?)"));
+    const std::string zoned =
+        "dimension 3\ntolerance 0.01\n" + mat +
+        "E=1e9 nu=0.25\nblock box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5\n";
+    QVERIFY(has(error_of(zoned + "zone generate edge=0.3"),
+                "test:6: block 1 is zoned already; a block is zoned once"));
+    QVERIFY(has(error_of(zoned + "boundary fix=z x=0,1 y=0"),
+                "test:6: 'y=0' is not a range: write y=Y0,Y1"));
+  }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");
     QVERIFY(has(e, "test:1:"));
@@ -403,7 +428,7 @@ class TestScriptErrors : public QObject {
     QVERIFY(has(error_of(ss + "ctable=0,1e6,0.01"),
                 "test:4: material 'soft': ctable needs pairs strain,value (3 numbers given)"));
     QVERIFY(has(error_of(ss + "ftable=0,30,0.02,25,0.01,20"),
-                "test:4: material 'soft': zone material 'soft': ftable's plastic strains must "
+                "test:4: material 'soft': ftable's plastic strains must "
                 "increase"));
     QVERIFY(has(error_of(ss + "ctable=0,1e6,0.01,-5"), "ctable's values cannot be negative"));
     QVERIFY(has(error_of(ss + "ftable=0,30,0.01,95"), "ftable's angles must be below 90"));

@@ -233,7 +233,14 @@ void Interpreter::cmd_material(Args& a) {
         if (has_e) elastic_from_young(young, poisson, zone.bulk, zone.shear);
         zone.finalize();
       } catch (const std::invalid_argument& e) {
-        fail("material '" + name + "': " + e.what() + suggest(model, zone_model_names()));
+        // (A misspelt model name gets a suggestion; a bad constant or strength only the reason.)
+        std::string why = e.what();
+        const std::string named = "zone material '" + name + "': ";
+        if (why.rfind(named, 0) == 0) why = why.substr(named.size());  // named once, below
+        fail("material '" + name + "': " + why +
+             (why.find("is not a zone model") != std::string::npos
+                  ? suggest(model, zone_model_names())
+                  : ""));
       }
     } else {
       zone.model.clear();

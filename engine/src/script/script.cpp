@@ -268,9 +268,28 @@ bool Interpreter::take_num(Args& a, const std::string& key, double& value) const
   return true;
 }
 
+namespace {
+// Keywords of some command: a key given that is one of these is not a misspelling of another.
+const std::vector<std::string>& common_keywords() {
+  static const std::vector<std::string> words = {
+      "density",  "kn",      "ks",       "friction",
+      "cohesion", "tension", "dilation", "dilation_limit",
+      "law",      "group",   "material", "block",
+      "at",       "x",       "y",        "z",
+      "vx",       "vy",      "vz",       "omega",
+      "ratio",    "cycles",  "label",    "safety",
+      "groups",   "origin",  "brick",    "courses",
+      "bricks",   "E",       "nu",       "K",
+      "G",        "model"};
+  return words;
+}
+}  // namespace
+
 void Interpreter::missing(const Args& a, const std::string& key, const std::string& what) const {
+  const auto& known = common_keywords();
   for (size_t i = 0; i < a.keys.size(); ++i)
-    if (!a.used[i] && !suggest(a.keys[i].first, {key}).empty())
+    if (!a.used[i] && std::find(known.begin(), known.end(), a.keys[i].first) == known.end() &&
+        !suggest(a.keys[i].first, {key}).empty())
       fail(what + " needs " + key + "= ('" + a.keys[i].first + "' is not a keyword of '" +
            a.command + "'; did you mean '" + key + "'?)");
   fail(what + " needs " + key + "=");
@@ -283,13 +302,7 @@ void Interpreter::done(Args& a) const {
       for (size_t j = 0; j < a.keys.size(); ++j)
         if (a.used[j]) known.push_back(a.keys[j].first);
       fail("'" + a.keys[i].first + "' is not a keyword of '" + a.command + "'" +
-           suggest(a.keys[i].first, {"density",  "kn",      "ks",       "friction",
-                                     "cohesion", "tension", "dilation", "dilation_limit",
-                                     "law",      "group",   "material", "block",
-                                     "at",       "x",       "y",        "vx",
-                                     "vy",       "omega",   "ratio",    "cycles",
-                                     "label",    "safety",  "groups",   "origin",
-                                     "brick",    "courses", "bricks"}));
+           suggest(a.keys[i].first, common_keywords()));
     }
 }
 

@@ -80,6 +80,10 @@ NodeBox Interpreter::node_box(Args& a) {
   std::string v;
   for (int k = 0; k < model_.dim; ++k)
     if (take(a, std::string(1, static_cast<char>('x' + k)), v)) {
+      const std::string axis(1, static_cast<char>('x' + k));
+      if (split_top_level(v).size() != 2)
+        fail("'" + axis + "=" + v + "' is not a range: write " + axis + "=" +
+             static_cast<char>('X' + k) + "0," + static_cast<char>('X' + k) + "1");
       const Vec2 r = point(v);
       box.lo[k] = std::min(r.x(), r.y()), box.hi[k] = std::max(r.x(), r.y()), box.given = true;
     }
@@ -120,6 +124,20 @@ void Interpreter::cmd_zone(Args& a) {
     done(a);
     if (sel.empty())
       for (size_t b = 0; b < model_.block_count(); ++b) sel.push_back(b);
+    // A block zoned already keeps its zones (its nodes carry its state): say so, and refuse a
+    // command that would zone nothing.
+    size_t zoned = 0;
+    int first_zoned = -1;
+    for (size_t b : sel)
+      if (three ? model_.blocks3.deformable[b] : model_.blocks.deformable[b])
+        if (++zoned == 1) first_zoned = block_id(b);
+    if (zoned == sel.size())
+      fail(std::string(zoned == 1 ? "block " : "blocks ") + std::to_string(first_zoned) +
+           (zoned == 1 ? " is" : " and the rest are") +
+           " zoned already; a block is zoned once (re-zoning is not supported)");
+    if (zoned > 0)
+      warn(std::to_string(zoned) + " block(s) zoned already (block " + std::to_string(first_zoned) +
+           " ...) keep their zones");
     size_t fixed_blocks = 0;
     const auto report_fixed = [&] {
       if (fixed_blocks > 0)

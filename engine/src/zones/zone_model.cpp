@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 #include "tessera/plugin.hpp"
@@ -314,8 +315,12 @@ void ZoneProperties::finalize() {
   if (!(density > 0)) throw std::invalid_argument("zone material '" + name + "' needs a density");
   const bool anisotropic = model == "transversely-isotropic";
   if (anisotropic) zone_law::anisotropic_stiffness(*this);
-  if (!(bulk > 0 && shear > 0))
-    throw std::invalid_argument("zone material '" + name + "' needs elastic constants");
+  if (!(bulk > 0 && shear > 0)) {
+    std::ostringstream msg;
+    msg << "elastic constants must be positive (bulk modulus K " << bulk << " Pa, shear modulus G "
+        << shear << " Pa)";
+    throw std::invalid_argument(msg.str());
+  }
   const bool softening = model == "strain-softening", ubiquitous = model == "ubiquitous-joint";
   if (model == "mohr-coulomb" || model == "drucker-prager" || softening || ubiquitous) {
     if (!(friction >= 0 && friction < 90) || !(dilation >= 0 && dilation <= friction))
