@@ -148,7 +148,9 @@ class TestDeformable : public QObject {
   // sigma_n / kn = 0.125 mm at mid-height, a tenth of that settlement, so they must have taken
   // the stresses that vary with depth. (What is left, 0.6%, is the node and edge shares of
   // joint length differing from the zones' consistent nodal loads; it grows as the joints soften
-  // - 5% at kn = 1e8 - which is why scripts solve once and reset displacements after insitu.)
+  // - 5% at kn = 1e8 - which is why scripts solve once and reset displacements after insitu.
+  // Since zone stresses turn with their zones' spin, 1.0%: the blocks' small turns as the
+  // joints take their share carry the in-situ stress round with them.)
   void insituGradientInJoints() {
     const std::string base =
         "round 0.01\nmaterial define rock density=2500 E=1e9 nu=0.25\n"
@@ -167,7 +169,7 @@ class TestDeformable : public QObject {
     qInfo("top settles %.3e m from an unstressed state, %.3e m from the in-situ state", full,
           start);
     QVERIFY(full < -5e-4);
-    QVERIFY(std::abs(start) < 0.01 * std::abs(full));
+    QVERIFY(std::abs(start) < 0.015 * std::abs(full));
   }
 
   // Density scaling changes the path to equilibrium, not the equilibrium: the column on a rigid

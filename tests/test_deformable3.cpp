@@ -5,6 +5,7 @@
 
 #include "support.hpp"
 #include "tessera/core/parallel.hpp"
+#include "tessera/core/step.hpp"
 #include "tessera/io/state_io.hpp"
 
 using namespace tessera;
@@ -366,6 +367,50 @@ class TestDeformable3 : public QObject {
     r.run("step 100");
     qInfo("fell %.3g m, then held", fallen);
     QCOMPARE(lowest(), stopped);
+  }
+
+  // A zoned cube under sxx = -1 MPa turned rigidly through 90 degrees about z, its nodes driven
+  // along the chords of the turn: the stress turns with it (syy = -1 MPa, sxx = sxy = 0), for
+  // 4- and 10-node zones. The stress was not turned at all (an independent check: sxx -0.874,
+  // syy +0.126 MPa after the turn), and the strain taken on the shape at the end of each step
+  // read the turn as a stretch of the angle times the step's turn (0.126 MPa of isotropic
+  // stress here): it is taken halfway along the step now.
+  void stressTurnsWithTheZone() {
+    for (const int order : {1, 2}) {
+      ScriptRun r;
+      r.run(
+          "dimension 3\ntolerance 0.01\nmaterial define rock density=2000 E=1e9 nu=0.25\n"
+          "block box 0,0,0 1,1,1 material=rock\nzone generate edge=0.5 order=" +
+          std::to_string(order) +
+          "\ngravity 0 0 0\ndamping none\ntimestep fixed 1e-4\n"
+          "insitu stress=-1e6,0,0,0,0,0\n");
+      Model& m = r.model();
+      Continuum3& c = m.continuum3;
+      const Vec3 centre(0.5, 0.5, 0.5);
+      const double turn = 1e-4;  // radians a step
+      const int steps = static_cast<int>(std::lround(0.5 * M_PI / turn));
+      std::vector<Vec3> start = c.pos;
+      for (int i = 1; i <= steps; ++i) {
+        const Eigen::Matrix3d rot = Eigen::AngleAxisd(turn * i, Vec3::UnitZ()).toRotationMatrix();
+        for (size_t n = 0; n < c.node_count(); ++n) {
+          c.fixity[n] = 7;
+          c.fixed_vel[n] = (centre + rot * (start[n] - centre) - c.pos[n]) / 1e-4;
+        }
+        run_cycles(m, 1);
+      }
+      double sxx = 0, syy = 0, sxy = 0, mean = 0;
+      const auto zones = static_cast<double>(c.zone_count());
+      for (size_t z = 0; z < c.zone_count(); ++z) {
+        const ZoneStress& s = c.stress[z];  // (a 10-node zone's: its points' mean)
+        sxx += s.xx / zones, syy += s.yy / zones, sxy += s.xy / zones;
+      }
+      mean = 0.5 * (sxx + syy) + 0.5e6;  // the in-plane isotropic part beyond the turned stress
+      qInfo("order %d: after 90 degrees sxx %.4g, syy %.4g, sxy %.4g MPa (isotropic part %.3g)",
+            order, sxx / 1e6, syy / 1e6, sxy / 1e6, mean / 1e6);
+      QVERIFY(std::abs((syy - sxx) + 1e6) < 1e-3 * 1e6);
+      QVERIFY(std::abs(sxy) < 1e-3 * 1e6);
+      QVERIFY(std::abs(mean) < 1e-6 * 1e6);
+    }
   }
 
   // `boundary vz=` drives the top's nodes down and leaves them free across (a smooth platen):

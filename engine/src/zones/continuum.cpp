@@ -20,22 +20,30 @@ using VecD = typename ContinuumT<D>::Vec;
 
 // A zone's shape-function gradients on `pos`, each times D! times its measure: in 2D the edge
 // opposite each node turned outward, in 3D the rows of the Jacobian's adjugate.
+// (p: the zone's corners in zone order.)
 template <int D>
-[[gnu::always_inline]] inline std::array<VecD<D>, D + 1> gradients(
-    const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zone& t) {
+[[gnu::always_inline]] inline std::array<VecD<D>, D + 1> corner_gradients(
+    const std::array<VecD<D>, D + 1>& p) {
   std::array<VecD<D>, D + 1> g;
   if constexpr (D == 2) {
     for (int k = 0; k < 3; ++k) {
-      const Vec2& pj = pos[t[(k + 1) % 3]];
-      const Vec2& pk = pos[t[(k + 2) % 3]];
+      const Vec2& pj = p[(k + 1) % 3];
+      const Vec2& pk = p[(k + 2) % 3];
       g[k] = Vec2(pj.y() - pk.y(), pk.x() - pj.x());
     }
   } else {
-    const Vec3 e1 = pos[t[1]] - pos[t[0]], e2 = pos[t[2]] - pos[t[0]], e3 = pos[t[3]] - pos[t[0]];
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
     g[1] = e2.cross(e3), g[2] = e3.cross(e1), g[3] = e1.cross(e2);
     g[0] = -(g[1] + g[2] + g[3]);
   }
   return g;
+}
+template <int D>
+[[gnu::always_inline]] inline std::array<VecD<D>, D + 1> gradients(
+    const std::vector<VecD<D>>& pos, const typename ContinuumT<D>::Zone& t) {
+  std::array<VecD<D>, D + 1> p;
+  for (int k = 0; k <= D; ++k) p[k] = pos[t[k]];
+  return corner_gradients<D>(p);
 }
 
 // The measure (area, volume) of a zone with corners in `pos`.
@@ -48,18 +56,22 @@ template <int D>
     return (pos[t[1]] - pos[t[0]]).cross(pos[t[2]] - pos[t[0]]).dot(pos[t[3]] - pos[t[0]]) / 6.0;
 }
 
-// The symmetric part of sum_k u_k g_k^T times `f`, as a strain (tensor shears).
+// The symmetric part of sum_k u_k g_k^T times `f`, as a strain (tensor shears), and its
+// antisymmetric part, the spin.
 template <int D>
 [[gnu::always_inline]] inline StrainIncrement symmetric_gradient(
-    const std::array<VecD<D>, D + 1>& u, const std::array<VecD<D>, D + 1>& g, double f) {
+    const std::array<VecD<D>, D + 1>& u, const std::array<VecD<D>, D + 1>& g, double f,
+    Spin& spin) {
   Eigen::Matrix<double, D, D> l = Eigen::Matrix<double, D, D>::Zero();
   for (int k = 0; k <= D; ++k)
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) l(i, j) += u[k][i] * g[k][j];
   StrainIncrement e{l(0, 0) * f, l(1, 1) * f, 0.5 * (l(0, 1) + l(1, 0)) * f};
+  spin.xy = 0.5 * (l(0, 1) - l(1, 0)) * f;
   if constexpr (D == 3) {
     e.zz = l(2, 2) * f, e.yz = 0.5 * (l(1, 2) + l(2, 1)) * f;
     e.xz = 0.5 * (l(0, 2) + l(2, 0)) * f;
+    spin.yz = 0.5 * (l(1, 2) - l(2, 1)) * f, spin.xz = 0.5 * (l(0, 2) - l(2, 0)) * f;
   }
   return e;
 }
@@ -152,8 +164,9 @@ StrainIncrement total_strain(const ContinuumT<D>& c, size_t z) {
     if (c.quadratic(z)) return quadratic_total_strain(c, z);
   const auto& t = c.zones[z];
   const double scaled = kFactorial<D> * measure<D>(c.pos0, t);
+  Spin turned;  // (not reported)
   StrainIncrement e =
-      symmetric_gradient<D>(gather<D>(c.pos, t, &c.pos0), gradients<D>(c.pos0, t), 1.0);
+      symmetric_gradient<D>(gather<D>(c.pos, t, &c.pos0), gradients<D>(c.pos0, t), 1.0, turned);
   e.xx /= scaled, e.yy /= scaled, e.xy /= scaled, e.zz /= scaled, e.yz /= scaled, e.xz /= scaled;
   return e;
 }
@@ -332,7 +345,7 @@ void zone_forces(ContinuumT<D>& c) {
     c.force[n] = c.applied[n] + c.mass[n] * c.gravity;
     w.scale[n] = c.applied[n].norm() + c.mass[n] * c.gravity.norm();
   }
-  w.de.resize(nz), w.volume.resize(nz), w.ev.resize(nz), w.ev_mixed.resize(nz);
+  w.de.resize(nz), w.spin.resize(nz), w.volume.resize(nz), w.ev.resize(nz), w.ev_mixed.resize(nz);
   w.dp.resize(nz), w.dp_mixed.resize(nz), w.node_sum.resize(nn), w.node_weight.resize(nn);
   w.linear.assign(nz, 0);
   // Zones: strain increment from the nodal velocities (uniform gradient of the linear field).
@@ -352,7 +365,18 @@ void zone_forces(ContinuumT<D>& c) {
       }
     const auto& t = c.zones[z];
     const double scaled = kFactorial<D> * measure<D>(c.pos, t);
-    w.de[z] = symmetric_gradient<D>(gather<D>(c.vel, t), gradients<D>(c.pos, t), c.dt / scaled);
+    // The velocities that brought the nodes here, over the zone halfway along that step (on
+    // the shape at its end, a turn would read as a stretch of the angle times the step's turn).
+    const std::array<VecD<D>, D + 1> v = gather<D>(c.vel, t);
+    std::array<VecD<D>, D + 1> mid = gather<D>(c.pos, t);
+    for (int k = 0; k <= D; ++k) mid[k] -= 0.5 * c.dt * v[k];
+    const std::array<VecD<D>, D + 1> g = corner_gradients<D>(mid);
+    double mid_scaled;
+    if constexpr (D == 2)
+      mid_scaled = cross(Vec2(mid[1] - mid[0]), Vec2(mid[2] - mid[0]));
+    else
+      mid_scaled = (mid[1] - mid[0]).cross(mid[2] - mid[0]).dot(mid[3] - mid[0]);
+    w.de[z] = symmetric_gradient<D>(v, g, c.dt / mid_scaled, w.spin[z]);
     w.volume[z] = scaled / kFactorial<D>, w.ev[z] = trace<D>(w.de[z]);
     w.linear[z] = 1;
   }
@@ -376,6 +400,7 @@ void zone_forces(ContinuumT<D>& c) {
       if constexpr (D == 3) de.zz += d;
     }
     ZoneStress& s = c.stress[z];
+    rotate_stress(s, w.spin[z]);
     const double before = trace<D>(s);
     p.impl->update(p, de, s, c.state[z], c.plastic[z]);
     if (mixed && (c.state[z] & (kShearNow | kTensionNow))) {

@@ -11,8 +11,9 @@ namespace {
 // Gauss's four points for a tetrahedron (exact for quadratics), each of weight 1/4.
 constexpr double kGaussA = 0.5854101966249685, kGaussB = 0.1381966011250105;
 
-// sum_k u_k g_k^T, symmetrised, times f (tensor shears).
-StrainIncrement strain_of(const std::array<Vec3, 10>& u, const std::array<Vec3, 10>& g, double f) {
+// sum_k u_k g_k^T, symmetrised, times f (tensor shears); with spin, its antisymmetric part.
+StrainIncrement strain_of(const std::array<Vec3, 10>& u, const std::array<Vec3, 10>& g, double f,
+                          Spin* spin = nullptr) {
   // Plain sums in node order: Eigen's outer products gave the same sums, but took half of a
   // 10-node model's run under the sanitizers.
   double l[3][3] = {};
@@ -20,6 +21,10 @@ StrainIncrement strain_of(const std::array<Vec3, 10>& u, const std::array<Vec3, 
     const double *a = u[k].data(), *b = g[k].data();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) l[i][j] += b[j] * a[i];
+  }
+  if (spin) {
+    spin->xy = 0.5 * (l[0][1] - l[1][0]) * f, spin->yz = 0.5 * (l[1][2] - l[2][1]) * f;
+    spin->xz = 0.5 * (l[0][2] - l[2][0]) * f;
   }
   return {l[0][0] * f,
           l[1][1] * f,
@@ -73,6 +78,12 @@ void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) 
   const std::array<Vec3, 4> dl = volume_gradients(corners_of(c.pos, c.zones[z]), volume);
   std::array<Vec3, 10> v;
   for (int k = 0; k < 10; ++k) v[k] = c.vel[nodes[k]];
+  // The strain over the zone halfway along the step that brought its nodes here (as a linear
+  // zone's: on the shape at its end a turn would read as a stretch).
+  std::array<Vec3, 4> mid = corners_of(c.pos, c.zones[z]);
+  for (int k = 0; k < 4; ++k) mid[k] -= 0.5 * c.dt * c.vel[c.zones[z][static_cast<size_t>(k)]];
+  double mid_volume = 0;
+  const std::array<Vec3, 4> dl_mid = volume_gradients(mid, mid_volume);
   ZoneStress mean;
   uint8_t state = 0;
   double plastic = 0;
@@ -80,7 +91,10 @@ void quadratic_zone_forces(Continuum3& c, size_t z, std::vector<double>& scale) 
     const std::array<Vec3, 10> grad = quadratic_gradients(dl, g);
     // The law at the point, on its strain increment.
     ZoneStress& s = c.gp_stress[z][g];
-    p.impl->update(p, strain_of(v, grad, c.dt), s, c.gp_state[z][g], c.gp_plastic[z][g]);
+    Spin spin;
+    const StrainIncrement de = strain_of(v, quadratic_gradients(dl_mid, g), c.dt, &spin);
+    rotate_stress(s, spin);
+    p.impl->update(p, de, s, c.gp_state[z][g], c.gp_plastic[z][g]);
     state |= c.gp_state[z][g], plastic += c.gp_plastic[z][g] / 4;
     mean.xx += s.xx / 4, mean.yy += s.yy / 4, mean.zz += s.zz / 4;
     mean.xy += s.xy / 4, mean.yz += s.yz / 4, mean.xz += s.xz / 4;

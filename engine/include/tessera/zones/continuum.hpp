@@ -59,6 +59,7 @@ struct ZoneScratch {
   std::vector<uint8_t> linear;
   std::vector<double> scale;
   std::vector<StrainIncrement> de;
+  std::vector<Spin> spin;
   std::vector<double> volume, ev, ev_mixed, dp, dp_mixed, node_sum, node_weight;
 };
 

@@ -65,6 +65,24 @@ struct ZoneStress {
   double xx = 0, yy = 0, xy = 0, zz = 0, yz = 0, xz = 0;
 };
 
+// A step's spin: the antisymmetric part of the velocity gradient times the step,
+// w_ij = (dv_i/dx_j - dv_j/dx_i) dt / 2 (2D: xy only).
+struct Spin {
+  double xy = 0, yz = 0, xz = 0;
+};
+// Turns a stress with its material through a step's spin (the Jaumann rate's rotation,
+// sigma + W sigma - sigma W): a zone that turns carries its stress round with it, so that a
+// rigid rotation leaves the principal stresses as they were, in the material's directions.
+inline void rotate_stress(ZoneStress& s, const Spin& w) {
+  const ZoneStress o = s;
+  s.xx += 2 * (w.xy * o.xy + w.xz * o.xz);
+  s.yy += 2 * (w.yz * o.yz - w.xy * o.xy);
+  s.zz -= 2 * (w.xz * o.xz + w.yz * o.yz);
+  s.xy += w.xy * (o.yy - o.xx) + w.xz * o.yz + w.yz * o.xz;
+  s.yz += w.yz * (o.zz - o.yy) - w.xy * o.xz - w.xz * o.xy;
+  s.xz += w.xz * (o.zz - o.xx) + w.xy * o.yz - w.yz * o.xy;
+}
+
 // The out-of-plane stress of plane strain (ezz = 0) with an in-plane stress `s` from zero:
 // nu (sxx + syy), or from a transversely isotropic material's compliance.
 double plane_strain_zz(const ZoneProperties& p, const ZoneStress& s);
