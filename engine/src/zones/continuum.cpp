@@ -364,19 +364,20 @@ void zone_forces(ContinuumT<D>& c) {
         continue;
       }
     const auto& t = c.zones[z];
-    const double scaled = kFactorial<D> * measure<D>(c.pos, t);
     // The velocities that brought the nodes here, over the zone halfway along that step (on
     // the shape at its end, a turn would read as a stretch of the angle times the step's turn).
     const std::array<VecD<D>, D + 1> v = gather<D>(c.vel, t);
     std::array<VecD<D>, D + 1> mid = gather<D>(c.pos, t);
     for (int k = 0; k <= D; ++k) mid[k] -= 0.5 * c.dt * v[k];
     const std::array<VecD<D>, D + 1> g = corner_gradients<D>(mid);
-    double mid_scaled;
+    // D! times the measure there (3D: the adjugate's row times its edge is the determinant);
+    // it also weighs the zone in the nodal averages.
+    double scaled;
     if constexpr (D == 2)
-      mid_scaled = cross(Vec2(mid[1] - mid[0]), Vec2(mid[2] - mid[0]));
+      scaled = cross(Vec2(mid[1] - mid[0]), Vec2(mid[2] - mid[0]));
     else
-      mid_scaled = (mid[1] - mid[0]).cross(mid[2] - mid[0]).dot(mid[3] - mid[0]);
-    w.de[z] = symmetric_gradient<D>(v, g, c.dt / mid_scaled, w.spin[z]);
+      scaled = g[1].dot(mid[1] - mid[0]);
+    w.de[z] = symmetric_gradient<D>(v, g, c.dt / scaled, w.spin[z]);
     w.volume[z] = scaled / kFactorial<D>, w.ev[z] = trace<D>(w.de[z]);
     w.linear[z] = 1;
   }
@@ -400,7 +401,10 @@ void zone_forces(ContinuumT<D>& c) {
       if constexpr (D == 3) de.zz += d;
     }
     ZoneStress& s = c.stress[z];
-    rotate_stress(s, w.spin[z]);
+    if constexpr (D == 2)
+      rotate_plane_stress(s, w.spin[z].xy);
+    else
+      rotate_stress(s, w.spin[z]);
     const double before = trace<D>(s);
     p.impl->update(p, de, s, c.state[z], c.plastic[z]);
     if (mixed && (c.state[z] & (kShearNow | kTensionNow))) {

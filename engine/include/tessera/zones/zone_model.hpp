@@ -83,6 +83,13 @@ inline void rotate_stress(ZoneStress& s, const Spin& w) {
   s.xz += w.xz * (o.zz - o.xx) + w.xy * o.yz - w.yz * o.xy;
 }
 
+// The same in the plane (2D: the spin's xy only, and no out-of-plane shear to turn).
+inline void rotate_plane_stress(ZoneStress& s, double wxy) {
+  const double d = 2 * wxy * s.xy;
+  s.xy += wxy * (s.yy - s.xx);
+  s.xx += d, s.yy -= d;
+}
+
 // The out-of-plane stress of plane strain (ezz = 0) with an in-plane stress `s` from zero:
 // nu (sxx + syy), or from a transversely isotropic material's compliance.
 double plane_strain_zz(const ZoneProperties& p, const ZoneStress& s);
