@@ -61,8 +61,11 @@ int run_batch(const std::string& script, std::string out_dir, int threads, bool 
     interp.run_file(script);
   } catch (const ScriptError& e) {
     std::cerr << e.what() << std::endl;
+    interp.set_outcome("error", e.what());
     status = 1;
   }
+  if (const int sig = g_signal; sig != 0)
+    interp.set_outcome("interrupted", sig == SIGINT ? "SIGINT" : "SIGTERM");
   // Results so far are written even after an error, so nothing computed is lost.
   try {
     interp.finish();

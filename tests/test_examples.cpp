@@ -336,6 +336,12 @@ class TestExamples : public QObject {
       QVERIFY2(
           QFile::exists(r.dir + "/summary.json") && QFileInfo(r.dir + "/summary.json").size() > 0,
           name.c_str());
+      // The summary says the results are partial, and why.
+      QFile f(r.dir + "/summary.json");
+      QVERIFY(f.open(QIODevice::ReadOnly));
+      const QJsonObject summary = QJsonDocument::fromJson(f.readAll()).object();
+      QCOMPARE(summary["status"].toString(), QString("error"));
+      QCOMPARE(summary["error"].toString(), last);
     }
   }
 
@@ -365,6 +371,14 @@ class TestExamples : public QObject {
       qInfo("%s", qPrintable(err.trimmed()));
       QVERIFY(err.contains(sig == SIGINT ? "interrupted by SIGINT" : "interrupted by SIGTERM"));
       QVERIFY(QFileInfo(out + "/summary.json").size() > 0);
+      const QJsonObject stopped = QJsonDocument::fromJson([&] {
+                                    QFile f(out + "/summary.json");
+                                    f.open(QIODevice::ReadOnly);
+                                    return f.readAll();
+                                  }())
+                                      .object();
+      QCOMPARE(stopped["status"].toString(), QString("interrupted"));
+      QCOMPARE(stopped["error"].toString(), QString(sig == SIGINT ? "SIGINT" : "SIGTERM"));
       QVERIFY(QFile::exists(out + "/history.csv"));
       QVERIFY(QFile::exists(out + "/vtk/blocks.pvd"));
       QVERIFY(QFile::exists(out + "/interrupted.state"));
@@ -381,6 +395,7 @@ class TestExamples : public QObject {
                            }())
                                .object();
       QVERIFY(summary["cycles"].toDouble() > 10);
+      QCOMPARE(summary["status"].toString(), QString("completed"));
     }
   }
 

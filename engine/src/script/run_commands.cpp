@@ -500,6 +500,8 @@ void Interpreter::finish() {
   j["contacts"] = model_.dim == 3 ? model_.contacts3.size() : model_.contacts.size();
   j["threads"] = thread_count();
   j["warnings"] = summary_.warnings;
+  j["status"] = summary_.status;
+  if (!summary_.error.empty()) j["error"] = summary_.error;
   if (summary_.fos) j["fos"] = *summary_.fos;
   // Bytes that are not UTF-8 (a title typed in another encoding) become U+FFFD rather than
   // stopping the write; the file is written whole and then moved in place, never left empty.

@@ -49,6 +49,8 @@ struct RunSummary {
   double wall_seconds = 0.0;  // time spent cycling
   std::vector<std::string> warnings;
   std::optional<double> fos;  // the last `solve fos`
+  // How the run ended: "completed", "error" (with the message) or "interrupted".
+  std::string status = "completed", error;
 };
 
 // A step or solve the script ran: the stages of an analysis, as the GUI lists them.
@@ -120,6 +122,11 @@ class Interpreter {
   Model& model() { return model_; }
   const Model& model() const { return model_; }
   const RunSummary& summary() const { return summary_; }
+  // Records how a run that stopped early ended ("error" or "interrupted", and why), for the
+  // summary file that finish() writes.
+  void set_outcome(const std::string& status, const std::string& message) {
+    summary_.status = status, summary_.error = message;
+  }
   const std::string& out_dir() const { return out_dir_; }
   // Value of a script variable; throws std::out_of_range if unknown.
   double variable(const std::string& name) const { return vars_.at(name); }
