@@ -120,8 +120,9 @@ void update(Model& m, CablesT<D>& K, double alpha) {
       const V vh = anchor_velocity(m, K.host[i]);
       // The node's round-off: its stiffness times the model's round-off length. A force within
       // it is none (an unloaded cable's noise handed to a free block would be all its load).
-      const double rest = K.rest[i + 1 < n1 ? i : i - 1];
-      const double noise = (2.0 * p.ea / rest + p.kbond * K.bonded[i]) * m.roundoff_gap();
+      const double rest = K.rest[i + 1 < n1 || i == n0 ? i : i - 1];
+      const double axial_k = rest > 0.0 ? 2.0 * p.ea / rest : 0.0;
+      const double noise = (axial_k + p.kbond * K.bonded[i]) * m.roundoff_gap();
       if (c.head && i == n0) {
         // A faceplate: the node moves with its rock and hands it the segment's pull.
         K.vel[i] = vh.dot(t), K.host_force[i] = f.norm() > noise ? f : V::Zero(), K.bond[i] = 0.0;
