@@ -194,10 +194,10 @@ void rebuild(const Model& m, Contact3& c, const PlaneFit& fit) {
   c.type = lo <= 1 ? kVertexFace : hi == 2 ? kEdgeEdge : lo == 2 ? kEdgeFace : kFaceFace;
 }
 
-// The law's open branch at a sub-contact of rigid faces (see joint_forces3): whether it stays
-// open, and if so what the law writes.
-bool stay_open(SubContact& s, double roundoff) {
-  const double un_now = without_roundoff(-s.gap + s.closure, roundoff) + s.dilation;
+// The law's open branch (joint_forces3's, and the plane's pass for open contacts): whether a
+// sub-contact at this overlap stays open, and if so what the law writes.
+[[gnu::always_inline]] inline bool open_branch(SubContact& s, double overlap) {
+  const double un_now = overlap + s.dilation;
   if (!stays_open(un_now, s.fn, s.flags)) return false;
   s.fs = 0.0, s.fs2 = 0.0, s.un_prev = un_now, s.force = Vec3::Zero();
   return true;
@@ -239,7 +239,7 @@ bool follow(const Model& m, Contact3& c, const Vec3& n, bool try_open, double& d
     for (; s != c.subs.end(); ++s) {
       s->gap = gap(*s);
       d = std::max(d, -s->gap);
-      if (!stay_open(*s, roundoff)) break;
+      if (!open_branch(*s, without_roundoff(-s->gap + s->closure, roundoff))) break;
     }
     if (s == c.subs.end()) {
       deepest = d;
@@ -354,9 +354,7 @@ double joint_forces3(const Model& m, Contact3& c, const double* turn_speed) {
   for (SubContact& s : c.subs) {
     deepest = std::max(deepest, -s.gap);
     const double overlap = without_roundoff(-s.gap + s.closure, roundoff);
-    const double un_now = overlap + s.dilation;
-    if (stays_open(un_now, s.fn, s.flags)) {
-      s.fs = 0.0, s.fs2 = 0.0, s.un_prev = un_now, s.force = Vec3::Zero();
+    if (open_branch(s, overlap)) {
       if (s.link >= 0)
         fastest = std::max(fastest,
                            (side_velocity(m, c, s, 0) - side_velocity(m, c, s, 1)).squaredNorm());
