@@ -357,10 +357,8 @@ void add_bolts(const Snapshot& s, const ViewOptions& o, Scene& out, double size)
   for (const SnapshotBolt& b : s.bolts) {
     if (b.liner) {
       ++liners;
-      // A closed ring's last point is its first node again.
-      const bool ring = b.points.size() > 2 && b.block.front() == b.block.back() &&
-                        b.points.front() == b.points.back();
-      for (size_t k = 0; k + (ring ? 1 : 0) < b.points.size(); ++k) {
+      // (A ring's last point is its first node again.)
+      for (size_t k = 0; k + (b.closed ? 1 : 0) < b.points.size(); ++k) {
         ++liner_nodes, lmax = std::max(lmax, std::abs(b.axial[k]));
         liner_yield += (b.state[k] & kBoltAxialYield) != 0;
         liner_open += (b.state[k] & kLinerNodeOpen) != 0;

@@ -361,7 +361,7 @@ void copy_bolts(const Model& m, Snapshot& s) {
   const Liners& L = m.liners;
   for (const Liner& l : L.liners) {
     SnapshotBolt o;
-    o.name = l.name, o.cable = true, o.liner = true;
+    o.name = l.name, o.cable = true, o.liner = true, o.closed = l.closed;
     // (A closed ring's first node again at the end, to draw its last element.)
     for (uint32_t k = 0; k < l.count + (l.closed ? 1u : 0u); ++k) {
       const uint32_t i = l.first + k % l.count;

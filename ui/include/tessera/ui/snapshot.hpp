@@ -65,7 +65,8 @@ struct SnapshotZone {
 struct SnapshotBolt {
   std::string name;
   bool cable = false;
-  bool liner = false;  // a liner, drawn as a cable is (its axial force: tension positive)
+  bool liner = false;   // a liner, drawn as a cable is (its axial force: tension positive)
+  bool closed = false;  // a liner ring: its last point is its first node again
   std::vector<Vec2> points;
   std::vector<Vec3> points3;  // 3D models' cables (points: x and y)
   std::vector<int> block;
