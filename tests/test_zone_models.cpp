@@ -114,6 +114,18 @@ double jaeger(double s3, double cj, double phij, double beta) {
   return s3 + 2 * (cj + s3 * t) / d;
 }
 
+// Triaxial (3D: axial z) or plane-strain biaxial (2D: axial y) loading: the strains solved for
+// (held) and the stresses they keep, the confinement s3 across the axis and no shear.
+struct Confined {
+  int axial;
+  std::vector<int> held;
+  std::vector<double> target;
+};
+Confined confined(int dims, double s3) {
+  if (dims == 2) return {YY, {XX, XY}, {-s3, 0}};
+  return {ZZ, {XX, YY, XY, YZ, XZ}, {-s3, -s3, 0, 0, 0}};
+}
+
 ZoneProperties base(const std::string& model) {
   ZoneProperties p;
   p.name = "rock";
@@ -283,11 +295,7 @@ class TestZoneModels : public QObject {
     const double s3 = 1e6;
     for (int dims : {2, 3}) {
       Point pt{p, {-s3, -s3, 0, -s3, 0, 0}};
-      const int axial = dims == 2 ? YY : ZZ;
-      const std::vector<int> held =
-          dims == 2 ? std::vector<int>{XX, XY} : std::vector<int>{XX, YY, XY, YZ, XZ};
-      const std::vector<double> target =
-          dims == 2 ? std::vector<double>{-s3, 0} : std::vector<double>{-s3, -s3, 0, 0, 0};
+      const auto [axial, held, target] = confined(dims, s3);
       double worst_line = 0, peak = 0, half = 0, residual = 0;
       double half_strain = 0, residual_strain = 0;
       int yielding = 0;
@@ -342,11 +350,7 @@ class TestZoneModels : public QObject {
           (k + s3 / std::sqrt(3.0) + 2 * s3 * q / 3) / (1 / std::sqrt(3.0) - q / 3);
       for (int dims : {2, 3}) {
         Point pt{p, {-s3, -s3, 0, -s3, 0, 0}};
-        const int axial = dims == 2 ? YY : ZZ;
-        const std::vector<int> held =
-            dims == 2 ? std::vector<int>{XX, XY} : std::vector<int>{XX, YY, XY, YZ, XZ};
-        const std::vector<double> target =
-            dims == 2 ? std::vector<double>{-s3, 0} : std::vector<double>{-s3, -s3, 0, 0, 0};
+        const auto [axial, held, target] = confined(dims, s3);
         double peak = 0;
         for (int i = 0; i < 4000; ++i) {
           pt.step({{axial, -5e-6}}, held, target);
@@ -380,11 +384,7 @@ class TestZoneModels : public QObject {
         if (dims == 3) q.jdip = beta, q.jdipdir = 30;
         q.finalize();
         Point pt{q, {-s3, -s3, 0, -s3, 0, 0}};
-        const int axial = dims == 2 ? YY : ZZ;
-        const std::vector<int> held =
-            dims == 2 ? std::vector<int>{XX, XY} : std::vector<int>{XX, YY, XY, YZ, XZ};
-        const std::vector<double> target =
-            dims == 2 ? std::vector<double>{-s3, 0} : std::vector<double>{-s3, -s3, 0, 0, 0};
+        const auto [axial, held, target] = confined(dims, s3);
         double strength = 0;
         for (int i = 0; i < 600; ++i) {
           pt.step({{axial, -1e-5}}, held, target);
