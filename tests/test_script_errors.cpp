@@ -159,6 +159,14 @@ class TestScriptErrors : public QObject {
                 "test:6: block 1 is zoned already; a block is zoned once"));
     QVERIFY(has(error_of(zoned + "boundary fix=z x=0,1 y=0"),
                 "test:6: 'y=0' is not a range: write y=Y0,Y1"));
+    // A keyword of the other dimension is named as not one of this command's, with no
+    // suggestion of itself.
+    const auto vz = error_of(std::string(kBase) +
+                             "material define z density=2000 E=1e9 nu=0.25\n"
+                             "block 0,0 1,0 1,1 0,1 material=z\nzone generate edge=0.5\n"
+                             "boundary vz=1 y=0.9,1.1");
+    QVERIFY(has(vz, "'vz' is not a keyword of 'boundary'"));
+    QVERIFY(vz.find("did you mean 'vz'") == std::string::npos);
   }
   void unknownKeywordSuggests() {
     const auto e = error_of("joint define j kn=1e9 ks=1e9 frction=30");

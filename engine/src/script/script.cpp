@@ -301,8 +301,12 @@ void Interpreter::done(Args& a) const {
       std::vector<std::string> known;
       for (size_t j = 0; j < a.keys.size(); ++j)
         if (a.used[j]) known.push_back(a.keys[j].first);
+      // (A keyword of other commands, or of the other dimension, suggests nothing.)
+      std::vector<std::string> others;
+      for (const std::string& w : common_keywords())
+        if (w != a.keys[i].first) others.push_back(w);
       fail("'" + a.keys[i].first + "' is not a keyword of '" + a.command + "'" +
-           suggest(a.keys[i].first, common_keywords()));
+           suggest(a.keys[i].first, others));
     }
 }
 
