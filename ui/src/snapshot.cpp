@@ -8,6 +8,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "tessera/contact2d/interfaces.hpp"
 #include "tessera/contact3d/subcontacts.hpp"
 #include "tessera/core/block_loads.hpp"
 #include "tessera/core/model.hpp"
@@ -174,30 +175,6 @@ void copy_histories(const Model& m, Snapshot& s) {
     const size_t row = r + stride >= rows ? rows - 1 : r;
     s.history_cycles.push_back(static_cast<double>(h.cycles[row]));
     for (size_t c = 0; c < h.columns(); ++c) s.history_values[c].push_back(h.at(row, c));
-  }
-}
-// Along each interface, every contact's stretch reaches half way to its neighbours.
-void set_joint_stretches(const Contacts& C, Snapshot& s) {
-  if (C.pair_begin.empty() || C.pair_begin.back() != C.size()) return;
-  // Snapshot index of each live contact.
-  std::vector<int> at(C.size(), -1);
-  for (size_t c = 0, k = 0; c < C.size(); ++c)
-    if (C.kind[c] != kLost) at[c] = static_cast<int>(k++);
-  std::vector<std::pair<double, int>> line;
-  for (size_t p = 0; p + 1 < C.pair_begin.size(); ++p) {
-    line.clear();
-    Vec2 t = Vec2::Zero();
-    for (uint32_t c = C.pair_begin[p]; c < C.pair_begin[p + 1]; ++c) {
-      if (at[c] < 0) continue;
-      if (line.empty()) t = Vec2(-C.normal[c].y(), C.normal[c].x());
-      line.emplace_back(C.point[c].dot(t), at[c]);
-    }
-    std::sort(line.begin(), line.end());
-    for (size_t i = 0; i < line.size(); ++i) {
-      SnapshotContact& o = s.contacts[static_cast<size_t>(line[i].second)];
-      if (i > 0) o.from = o.point - 0.5 * (line[i].first - line[i - 1].first) * t;
-      if (i + 1 < line.size()) o.to = o.point + 0.5 * (line[i + 1].first - line[i].first) * t;
-    }
   }
 }
 
@@ -431,6 +408,7 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     }
   }
   const Contacts& C = m.contacts;
+  const std::vector<ContactStretch> stretch = contact_stretches(m);
   s.contacts.reserve(C.size());
   for (size_t c = 0; c < C.size(); ++c) {
     if (C.kind[c] == kLost) continue;
@@ -442,10 +420,9 @@ Snapshot make_snapshot(const Model& m, const std::string& title,
     if (C.joint[c] < m.joints.size()) o.joint = m.joints[C.joint[c]].name;
     if (C.tag[c] >= 0 && static_cast<size_t>(C.tag[c]) < m.joint_tags.size())
       o.joint_set = m.joint_tags[static_cast<size_t>(C.tag[c])];
-    o.from = o.to = o.point;
+    o.from = stretch[c].from, o.to = stretch[c].to;
     s.contacts.push_back(std::move(o));
   }
-  set_joint_stretches(C, s);
   copy_bolts(m, s);
   copy_zones(m, s);
   copy_catalogue(m, s);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "contact2d/joint_lines.hpp"
 #include "core/backend.hpp"
 #include "core/coulomb_law.hpp"
 #include "tessera/contact2d/contact_geometry.hpp"
@@ -101,95 +102,6 @@ void update_corner_contacts(Model& m) {
   });
 }
 
-// The stretch of joint a corner stands for when it is alone on its joint line (its neighbour
-// has lifted off): the corner as a sharp wedge cut by the other block's surface, each of its two
-// edges overlapping up to where it leaves that surface (at most the edge's straight part), and
-// half of that extent, since a spring bed under a wedge carries kn o s / 2. Without it the
-// length is the arc's chord, which vanishes as the overlap passes 2d, and a toppling block on
-// soft joints sinks through its base on its toe. Just after the neighbour lifts, the wedge runs
-// the whole face and the length is the share the two had: (w - 2d) / 2. Corner v of block a,
-// with the contact's normal, point and gap.
-double wedge_length(const Blocks& B, uint32_t a, uint32_t v, const Vec2& nrm, const Vec2& point,
-                    double gap) {
-  const uint32_t vp = B.prev_vertex(a, v);
-  const Vec2 t = perp(nrm);
-  // Depth of the sharp corner below the other block's surface (normals point to the owner).
-  const Vec2 surface = point - 0.5 * gap * nrm;
-  const double depth = (surface - B.world_vertex[v]).dot(nrm);
-  if (!(depth > 0.0)) return 0.0;
-  const uint32_t v0 = B.vert_begin[a], n = B.vertex_count(a);
-  const uint32_t next = v0 + (v - v0 + 1) % n;
-  double width = 0.0;
-  // One edge leaving the corner along u: it rises out of the surface after depth / rise.
-  const auto edge = [&](const Vec2& u, double straight) {
-    const double rise = u.dot(nrm), cap = std::max(straight, 0.0);
-    const double s = rise * cap > depth ? depth / rise : cap;
-    width += s * std::abs(u.dot(t));
-  };
-  edge(B.world_edge_dir[v], B.edge_length[v] - B.round_length[v] - B.round_length[next]);
-  edge(-B.world_edge_dir[vp], B.edge_length[vp] - B.round_length[vp] - B.round_length[v]);
-  return 0.5 * width;
-}
-
-// Shares a joint line's length among its contacts, given as (position along the line, index):
-// L = RQ1/2 + RQ2/2 with the neighbours as Q1, Q2, never less than a contact's own chord (which
-// `length` holds on the way in, Contacts::length).
-// Contacts closer than `merge` stand at one point (two corners meeting face to face): the
-// point's share is split evenly, so that round-off in their order cannot move the length from
-// one to the other from cycle to cycle. A line of one point (a corner whose neighbour lifted
-// off) has no neighbours to share with: its contacts take their corners' wedge lengths
-// (`wedge(i)`).
-template <class Wedge>
-inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double merge,
-                         double* length, const Wedge& wedge) {
-  const size_t k = along.size();
-  // Order by position, then index (std::pair's order, written out: its three-way comparison
-  // costs twice the instructions).
-  const auto before = [](const std::pair<double, uint32_t>& x,
-                         const std::pair<double, uint32_t>& y) {
-    return x.first < y.first || (x.first == y.first && x.second < y.second);
-  };
-  // Two contacts apart (the usual line): each takes half the distance between them, as below.
-  if (k == 2) {
-    if (before(along[1], along[0])) std::swap(along[0], along[1]);
-    if (along[1].first - along[0].first > merge) {
-      const double len = 0.5 * (along[1].first - along[0].first);
-      for (const auto& [x, i] : along) length[i] = std::max(len, length[i]);
-      return;
-    }
-  }
-  // Insertion sort: a line has a handful of contacts, mostly in order already.
-  for (size_t j = 1; j < k; ++j)
-    for (size_t q = j; q > 0 && before(along[q], along[q - 1]); --q)
-      std::swap(along[q], along[q - 1]);
-  // Centre of the group of contacts starting at g0; g1 receives the index past the group.
-  auto group = [&](size_t g0, size_t& g1) {
-    g1 = g0 + 1;
-    double sum = along[g0].first;
-    while (g1 < k && along[g1].first - along[g1 - 1].first <= merge) sum += along[g1++].first;
-    return sum / static_cast<double>(g1 - g0);
-  };
-  size_t g0 = 0, g1 = 0;
-  double prev = 0.0, centre = k ? group(0, g1) : 0.0;
-  if (k && g1 == k) {
-    for (size_t j = 0; j < k; ++j) {
-      const uint32_t i = along[j].second;
-      length[i] = std::max(wedge(i) / static_cast<double>(k), length[i]);
-    }
-    return;
-  }
-  while (g0 < k) {
-    size_t g2 = g1;
-    const double next = g1 < k ? group(g1, g2) : centre;
-    const double len = 0.5 * ((g0 > 0 ? centre - prev : 0.0) + (next - centre));
-    for (size_t j = g0; j < g1; ++j) {
-      const uint32_t i = along[j].second;
-      length[i] = std::max(len / static_cast<double>(g1 - g0), length[i]);
-    }
-    prev = centre, centre = next, g0 = g1, g1 = g2;
-  }
-}
-
 // Stops the run on contact i, as UDEC's "contact overlap too great" does.
 [[noreturn]] void throw_overlap(const Model& m, uint32_t i) {
   const Blocks& B = m.blocks;
@@ -206,7 +118,7 @@ inline void share_length(std::vector<std::pair<double, uint32_t>>& along, double
 
 // What the interfaces stage reads beside the model, once per stage.
 struct StageInputs {
-  double dt, merge, roundoff;
+  double dt, merge, roundoff, tolerance;
   bool plastic, damped;
 };
 
@@ -225,29 +137,16 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
                 double* __restrict pair_moment, double* __restrict pair_load) {
   const Blocks& B = m.blocks;
   const Contacts& C = m.contacts;
-  std::vector<std::pair<double, uint32_t>> along;
+  std::vector<LinePoint> along;
   std::vector<uint8_t> placed;
   std::vector<double> chords;
   const auto wedge = [&](uint32_t i) {
     return wedge_length(B, C.a[i], C.corner[i], normal[i], point[i], gap[i]);
   };
-  // Normals point towards the owner: compare them turned to point the same way.
-  const auto facing = [&](uint32_t q) { return C.a[q] < C.b[q] ? normal[q] : Vec2(-normal[q]); };
-  // Contacts of a pair split into joint lines by the way they face (a concave block can touch
-  // another along two faces); each line shares its length on its own.
-  const auto general_lines = [&](uint32_t c0, uint32_t c1) {
-    placed.assign(c1 - c0, 0);
-    for (uint32_t i = c0; i < c1; ++i) {
-      if (kind[i] == kLost || placed[i - c0]) continue;
-      const Vec2 n0 = facing(i), t = perp(n0);
-      along.clear();
-      for (uint32_t q = i; q < c1; ++q)
-        if (kind[q] != kLost && !placed[q - c0] && facing(q).dot(n0) > 0.8) {
-          placed[q - c0] = 1;
-          along.emplace_back(point[q].dot(t), q);
-        }
-      share_length(along, in.merge, length, wedge);
-    }
+  // Each contact's share of its joint line, never less than its own chord (`length` on the way
+  // in).
+  const auto store = [&](uint32_t i, double share, double, double) {
+    length[i] = std::max(share, length[i]);
   };
   for (size_t p = p0; p < p1; ++p) {
     const uint32_t c0 = C.pair_begin[p], c1 = C.pair_begin[p + 1];
@@ -258,25 +157,11 @@ void pair_chunk(const Model& m, size_t p0, size_t p1, const StageInputs& in, Fir
     // replace in `length` (a lost contact's is 0, and its length stays 0).
     const bool soft = B.deformable[pa] || B.deformable[pb];
     if (soft) chords.assign(length + c0, length + c1);
-    // Fast path (convex blocks, nearly every pair): all contacts face one way, so they form one
-    // joint line, the same list the general path below would build.
-    bool one_line = true;
-    Vec2 n_first = Vec2::Zero(), t_first = Vec2::Zero();
-    along.clear();
-    for (uint32_t i = c0; i < c1 && one_line; ++i) {
-      if (kind[i] == kLost) continue;
-      const Vec2 f = facing(i);
-      if (along.empty())
-        n_first = f, t_first = perp(f);
-      else if (!(f.dot(n_first) > 0.8))
-        one_line = false;
-      along.emplace_back(point[i].dot(t_first), i);
-    }
-    if (one_line) {
-      if (!along.empty()) share_length(along, in.merge, length, wedge);
-    } else {
-      general_lines(c0, c1);
-    }
+    const auto joined = joined_test(B, C, c0, in.tolerance, gap, point);
+    for_each_joint_line(C, c0, c1, kind, normal, point, along, placed,
+                        [&](std::vector<LinePoint>& line, const Vec2&) {
+                          share_length(line, in.merge, joined, wedge, store);
+                        });
     // A node of a deformable block stands for its own stretch of outline at most: a light node
     // alone against a long edge must not take the edge's stiffness. (A pair's contacts can be
     // owned by either block: checked per contact.)
@@ -375,8 +260,8 @@ void update_interfaces(Model& m) {
   // The interfaces' sums for the block sums, one per pair (dropped by detection passes).
   C.pair_force.resize(C.pair_count()), C.pair_moment.resize(C.pair_count());
   C.pair_load.resize(C.pair_count());
-  const StageInputs in{m.dt, 0.25 * m.settings.rounding, m.roundoff_gap(), !C.plastic.empty(),
-                       damped};
+  const StageInputs in{m.dt,          contact_merge(m),   m.roundoff_gap(),
+                       m.tolerance(), !C.plastic.empty(), damped};
   // The first contact (lowest index, whatever the threads) whose overlap is beyond belief.
   FirstFlagged too_deep;
   const auto held = [](std::vector<double>& v) { return v.empty() ? nullptr : v.data(); };

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "tessera/contact2d/interfaces.hpp"
 #include "tessera/contact3d/subcontacts.hpp"
 
 namespace tessera {
@@ -94,11 +95,13 @@ void write_contacts(const Model& m, const std::string& path) {
   const Blocks& B = m.blocks;
   const size_t n = C.size();
   std::ofstream out = open_file(path);
-  // Each contact is drawn as a segment of its length along the interface.
+  // Each contact is drawn as the stretch of joint it stands for (a lone point as a micrometre).
+  const std::vector<ContactStretch> stretch = contact_stretches(m);
   begin_piece(out, 2 * n, n, "Lines", [&](size_t k) {
     const size_t i = k / 2;
-    return Vec2(C.point[i] +
-                perp(C.normal[i]) * (0.5 * std::max(C.length[i], 1e-6) * (k % 2 ? 1.0 : -1.0)));
+    const ContactStretch& s = stretch[i];
+    if ((s.to - s.from).norm() >= 1e-6) return k % 2 ? s.to : s.from;
+    return Vec2(C.point[i] + perp(C.normal[i]) * (0.5e-6 * (k % 2 ? 1.0 : -1.0)));
   });
   out << "<Lines>\n";
   array(out, "Int64", "connectivity", 1, 2 * n, [](size_t k) { return k; });

@@ -10,9 +10,10 @@
 // so that the contacts of one interface lie together. Each joint line of an interface (contacts
 // whose normals agree) shares its length between its contacts by the chapter's rule L = RQ1/2 +
 // RQ2/2, with the neighbouring contacts along the interface as Q1 and Q2 (all contacts within the
-// tolerance count, touching or not, so that L does not jump when one corner lifts); a lone contact,
-// and never less than this, takes the chord of its rounded arc across the opposite edge or arc
-// (cases 2 and 3 of 5.2.2).
+// tolerance count, touching or not, so that L does not jump when one corner lifts) where the joint
+// runs between them (between a concave block's contacts it may not: across a tunnel, say;
+// contact2d/joint_lines.hpp); a lone contact, and never less than this, takes the chord of its
+// rounded arc across the opposite edge or arc (cases 2 and 3 of 5.2.2).
 //
 // A corner sitting in the notch of a concave block touches two of its faces: it then has two
 // contacts (slots 0 and 1), each held to its own face until the next detection pass.

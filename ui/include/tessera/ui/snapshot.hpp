@@ -34,8 +34,8 @@ struct SnapshotBlock {
 struct SnapshotContact {
   int a = 0, b = 0;  // block indices
   Vec2 point = Vec2::Zero(), normal = Vec2::Zero();
-  // The stretch of joint the contact stands for: from the point half way to its neighbours
-  // along the same interface (§5.2.2's L = RQ1/2 + RQ2/2); both the point for a lone contact.
+  // The stretch of joint the contact stands for (contact_stretches: its share of its joint
+  // line, §5.2.2's L = RQ1/2 + RQ2/2, where the joint runs; its length about its point alone).
   Vec2 from = Vec2::Zero(), to = Vec2::Zero();
   // 3D models: a sub-contact's point and the common plane's normal (length: half the side of
   // a square of its area; forces in N).
