@@ -269,6 +269,15 @@ bool move_plane(const Model& m, Contact3& c, bool try_open, double& deepest) {
       c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
     }
     if (c.drift < refresh) return follow(m, c, fit.normal, try_open, deepest);
+    // At a rebuild the plane is chosen afresh if another candidate now separates the blocks
+    // clearly better: a block sliding across a joint in its base meets the next base block
+    // first on a vertical plane (its front face), which must give way to the base's top face
+    // once the two overlap there.
+    const PlaneFit best = best_plane(B, a, b);
+    if (best.gap > fit.gap + 1e-9 * (B.bound_radius[a] + B.bound_radius[b])) {
+      fit = best;
+      c.kind = fit.kind, c.ia = fit.ia, c.ib = fit.ib;
+    }
     rebuild(m, c, fit);
     c.drift = 0.0;
   }
