@@ -1,9 +1,11 @@
 #include "tessera/io/vtk_output.hpp"
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string_view>
 #include <type_traits>
 
 #include "tessera/contact2d/interfaces.hpp"
@@ -13,23 +15,29 @@ namespace tessera {
 
 namespace {
 
-// Text of a list of numbers, for a DataArray body.
+// Text of a list of numbers, for a DataArray body: nine significant digits, or (points) the
+// shortest text that reads back as the same double, since a model at map coordinates (a
+// northing of 4e6) needs eleven digits for a millimetre.
 template <class F>
-void numbers(std::ostream& out, size_t n, F value) {
+void numbers(std::ostream& out, size_t n, F value, bool exact) {
   char buf[32];
   for (size_t i = 0; i < n; ++i) {
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(value(i)));
+    const double v = static_cast<double>(value(i));
+    if (exact)
+      *std::to_chars(buf, buf + sizeof buf - 1, v).ptr = '\0';
+    else
+      std::snprintf(buf, sizeof buf, "%.9g", v);
     out << buf << ((i % 12 == 11) ? '\n' : ' ');
   }
   out << '\n';
 }
 
-// One DataArray element with `comps` components per tuple.
+// One DataArray element with `comps` components per tuple; the points' coordinates exact.
 template <class F>
 void array(std::ostream& out, const char* type, const char* name, int comps, size_t n, F value) {
   out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\"" << comps
       << "\" format=\"ascii\">\n";
-  numbers(out, n * static_cast<size_t>(comps), value);
+  numbers(out, n * static_cast<size_t>(comps), value, std::string_view(name) == "Points");
   out << "</DataArray>\n";
 }
 
@@ -444,6 +452,11 @@ void VtkSeries::write(const Model& m) {
     std::snprintf(name, sizeof name, "%04zu.vtp", times_.size());
     write_support(m, dir_ + "/support_" + name);
   }
+  // The collections list one snapshot per time, in time: a snapshot at or before one listed
+  // (after a `restore`, or the run's last at the cycle of an interval one) takes the place of
+  // those from then on. Their files stay.
+  while (!listed_.empty() && times_[listed_.back()] >= m.time) listed_.pop_back();
+  listed_.push_back(times_.size());
   times_.push_back(m.time);
   write_collection("blocks");
   write_collection("contacts");
@@ -456,9 +469,11 @@ void VtkSeries::write_collection(const std::string& name, size_t first, const ch
   std::ofstream out = open_file(path);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   char buf[160];
-  for (size_t f = first; f < times_.size(); ++f) {
-    std::snprintf(buf, sizeof buf, "<DataSet timestep=\"%.9g\" part=\"0\" file=\"%s_%04zu.%s\"/>\n",
-                  times_[f], name.c_str(), f, ext);
+  for (const size_t f : listed_) {
+    if (f < first) continue;
+    std::snprintf(buf, sizeof buf,
+                  "<DataSet timestep=\"%.17g\" part=\"0\" file=\"%s_%04zu.%s\"/>\n", times_[f],
+                  name.c_str(), f, ext);
     out << buf;
   }
   out << "</Collection>\n</VTKFile>\n";
