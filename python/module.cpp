@@ -125,11 +125,33 @@ std::set<PyModel*>& live_models() {
   return models;
 }
 
+// How the program is ending: an uncaught exception (printed by now and kept as sys.last_value)
+// is an error, named as file:line: Type: message at its innermost frame, or (KeyboardInterrupt)
+// an interruption; {"completed", ""} otherwise.
+std::pair<std::string, std::string> program_outcome() {
+  const py::module_ sys = py::module_::import("sys");
+  if (!py::hasattr(sys, "last_value") || sys.attr("last_value").is_none()) return {"completed", ""};
+  const py::object e = sys.attr("last_value");
+  if (py::isinstance(e, py::module_::import("builtins").attr("KeyboardInterrupt")))
+    return {"interrupted", "SIGINT"};
+  std::string where;
+  py::object tb = sys.attr("last_traceback");
+  while (!tb.is_none() && !tb.attr("tb_next").is_none()) tb = tb.attr("tb_next");
+  if (!tb.is_none())
+    where = py::str(tb.attr("tb_frame").attr("f_code").attr("co_filename")).cast<std::string>() +
+            ":" + py::str(tb.attr("tb_lineno")).cast<std::string>() + ": ";
+  const std::string type = py::str(py::type::of(e).attr("__name__"));
+  return {"error", where + type + ": " + py::str(e).cast<std::string>()};
+}
+
 // At the program's exit (after an uncaught exception too), each model changed since its results
-// were last written writes them, as a batch run does.
+// were last written writes them, as a batch run does; after an uncaught exception every model
+// writes its summary again, saying how the program ended.
 void finish_all() {
+  const auto [status, error] = program_outcome();
   for (PyModel* m : live_models()) {
-    if (!m->unwritten || !m->owned) continue;
+    if (!m->owned || (!m->unwritten && status == "completed")) continue;
+    if (status != "completed") m->interp->set_outcome(status, error);
     try {
       m->finish();
     } catch (const std::exception& e) {

@@ -2,10 +2,12 @@
 
 Run by ctest (python/ puts the built module on PYTHONPATH); prints the measured numbers.
 """
+import atexit
 import inspect
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -13,9 +15,12 @@ import unittest
 
 import numpy as np
 
-import tessera
-
+# The results folder goes once every model has written into it at exit (atexit runs last
+# first: this is registered before the module registers its own).
 OUT = tempfile.mkdtemp(prefix="tessera_python_test_")
+atexit.register(shutil.rmtree, OUT, True)
+
+import tessera  # noqa: E402
 
 INCLINE = """
 set psi = 30
@@ -315,7 +320,25 @@ class Commands(unittest.TestCase):
         self.assertEqual(run.returncode, 1)
         self.assertIn("<string>:5: unknown command 'frobnicate'", run.stderr)
         with open(os.path.join(out, "summary.json")) as f:
-            self.assertEqual(json.load(f)["cycles"], 10)
+            summary = json.load(f)
+        self.assertEqual(summary["cycles"], 10)
+        # The summary says the program failed, and where.
+        self.assertEqual(summary["status"], "error")
+        self.assertIn("<string>:5: ScriptError:", summary["error"])
+        self.assertIn("unknown command 'frobnicate'", summary["error"])
+        # A program that ends well says so, though a model's command failed on the way.
+        out = os.path.join(OUT, "at_exit_caught")
+        script = ("import tessera\n"
+                  f"m = tessera.Model(out={out!r}, quiet=True)\n"
+                  f"m.command({INCLINE!r})\n"
+                  "try:\n    m.command('frobnicate')\nexcept tessera.ScriptError:\n    pass\n"
+                  "m.cycle(10)\n")
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 0)
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        self.assertEqual(summary["status"], "completed")
+        self.assertNotIn("error", summary)
 
 
 class Stack3D(unittest.TestCase):
