@@ -56,6 +56,9 @@ int run_batch(const std::string& script, std::string out_dir, int threads, bool 
   interp.set_figure_sink(ui::figure_sink());
   install_signal_handlers();
   interp.set_stop_flag(&g_stop);
+  // The results of a failed run show the model before the failing command (a cut or a zoning
+  // half done is no result), or as it stood when a failing step or solve stopped.
+  interp.set_rollback(true, false);
   int status = 0;
   try {
     interp.run_file(script);

@@ -1016,6 +1016,26 @@ class TestExamples : public QObject {
     QVERIFY(points.size() >= 3);
     QVERIFY(points[0] == 500000.123 && points[1] == 4000000.456);
   }
+  // A command that fails half done (a zoning that zoned block 1, then found block 2 has no
+  // elastic constants) is undone before the results are written: they show the model before it.
+  void failedCommandIsUndoneInTheResults() {
+    QTemporaryDir d;
+    const QString path =
+        write_file(d, "half.tess",
+                   "round 0.01\nmaterial define rock density=2500 E=1e9 nu=0.25\n"
+                   "material define stone density=2500\n"
+                   "block 0,0 1,0 1,1 0,1 material=rock\n"
+                   "block 1,0 2,0 2,1 1,1 material=stone\nzone generate edge=0.5\n");
+    const Run r = run_script(path);
+    QCOMPARE(r.exit_code, 1);
+    QVERIFY2(r.err.contains("half.tess:6: block 2: its material has no elastic constants"),
+             qPrintable(r.err));
+    const QJsonObject s = read_summary(r.dir);
+    QCOMPARE(s["status"].toString(), QString("error"));
+    QCOMPARE(s["blocks"].toInt(), 2);
+    QVERIFY(QFile::exists(r.dir + "/vtk/blocks_0000.vtp"));
+    QVERIFY(!QFile::exists(r.dir + "/vtk/zones_0000.vtp"));
+  }
   void badScriptFailsWithItsLine() {
     QTemporaryDir tmp;
     const QString script = tmp.path() + "/bad.tess";

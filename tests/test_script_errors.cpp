@@ -298,6 +298,16 @@ class TestScriptErrors : public QObject {
     qInfo("%zu of %zu corrupted files refused when read (the rest changed only values)", refused,
           tried);
     QVERIFY(refused > tried / 4);
+    // Bytes after the end: not the file save wrote.
+    std::ofstream(r.path("long.state"), std::ios::binary) << bytes << "junk";
+    QVERIFY(error_of("restore " + r.path("long.state")).find("data after the end of the state") !=
+            std::string::npos);
+    // Another version (the word after the 8-byte magic): what to do about it.
+    std::string other = bytes;
+    other[8] = static_cast<char>(other[8] + 1);
+    std::ofstream(r.path("other.state"), std::ios::binary) << other;
+    const std::string e = error_of("restore " + r.path("other.state"));
+    QVERIFY2(e.find("run the script that made it again") != std::string::npos, e.c_str());
   }
   void enclosingOpeningAddsNoArea() {
     ScriptRun r;

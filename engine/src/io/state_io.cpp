@@ -315,9 +315,14 @@ Model restore_state(const std::string& path) {
   if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) r.fail("wrong magic word");
   uint32_t version = 0;
   r.pod(version);
-  if (version != kVersion) r.fail("version " + std::to_string(version) + " is not supported");
+  if (version != kVersion)
+    throw std::runtime_error(path + ": a state file of version " + std::to_string(version) +
+                             ", and this Tessera reads version " + std::to_string(kVersion) +
+                             ": run the script that made it again to make it anew");
   Model m;
   fields(r, m);
+  // A file with more in it than the state is not the file save wrote.
+  if (in.peek() != std::char_traits<char>::eof()) r.fail("data after the end of the state");
   // Every index and count checked once, before anything follows them.
   if (const std::string why = state_problem(m); !why.empty()) r.fail(why);
   for (auto& j : m.joints) {

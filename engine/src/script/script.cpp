@@ -161,7 +161,9 @@ void Interpreter::execute(const std::string& text, const std::string& file, int 
   text_ = text;
   // 'call' is not rolled back as a whole: its lines are, one by one.
   std::unique_ptr<Model> backup;
-  if (rollback_ && a.command != "call") backup = std::make_unique<Model>(model_);
+  if (rollback_ && a.command != "call" &&
+      (rollback_runs_ || (a.command != "step" && a.command != "solve")))
+    backup = std::make_unique<Model>(model_);
   try {
     try {
       if (!follow_table(a)) (this->*(it->second))(a);

@@ -140,8 +140,11 @@ class Interpreter {
   // Draws figures for the `figure` command; without one, `figure` is an error.
   void set_figure_sink(FigureSink sink) { figure_sink_ = std::move(sink); }
   // With rollback on, a command that fails leaves the model as it was before that command
-  // (the GUI's promise: nothing the user made is lost to a bad line or a diverging run).
-  void set_rollback(bool on) { rollback_ = on; }
+  // (the GUI's promise: nothing the user made is lost to a bad line or a diverging run). Without
+  // `runs`, a failing step or solve is not undone: a batch run's results then show the model
+  // as it stood when the run stopped (the blocks that diverged, the histories to that cycle),
+  // while a half-done cut or zoning never reaches them.
+  void set_rollback(bool on, bool runs = true) { rollback_ = on, rollback_runs_ = runs; }
   const std::vector<StageRecord>& stages() const { return stages_; }
   const std::string& title() const { return title_; }
   // Defines (or replaces) a table; throws std::invalid_argument unless its times increase and
@@ -323,7 +326,7 @@ class Interpreter {
   std::atomic<bool>* stop_ = nullptr;
   std::function<void(const Model&)> observer_;
   FigureSink figure_sink_;
-  bool rollback_ = false;
+  bool rollback_ = false, rollback_runs_ = true;
   std::vector<StageRecord> stages_;
   std::string text_;  // the line being run
   double progress_seconds_ = 2.0;
