@@ -262,6 +262,22 @@ class TestScriptErrors : public QObject {
     QCOMPARE(h.interp->summary().warnings.size(), size_t(1));
     QVERIFY(has(h.interp->summary().warnings[0], "test:4: warning: the histories will reach"));
     QVERIFY(has(h.interp->summary().warnings[0], "history interval"));
+    // A model at map coordinates (a northing of 4e6, where a coordinate rounds to 1e-9 m) is
+    // told to move its origin, once; the same model at a local origin is not.
+    const auto far = [](double y0) {
+      ScriptRun f;
+      f.run(std::string(kBase) + "joint assign j\nblock 0," + test::num(y0 - 1) + " 2," +
+            test::num(y0 - 1) + " 2," + test::num(y0) + " 0," + test::num(y0) +
+            " material=rock\nfix block=1\nblock 0," + test::num(y0) + " 1," + test::num(y0) +
+            " 1," + test::num(y0 + 1) + " 0," + test::num(y0 + 1) +
+            " material=rock\ngravity 0 -10\nstep 5\nstep 5\n");
+      return f.interp->summary().warnings;
+    };
+    const std::vector<std::string> w = far(4e6);
+    QCOMPARE(w.size(), size_t(1));
+    QVERIFY(has(w[0], "test:9: warning: the model lies 4e+06 m from the origin"));
+    QVERIFY(has(w[0], "local origin"));
+    QVERIFY(far(10.0).empty());
   }
   void nonUtf8TitleStillWritesTheSummary() {
     ScriptRun r;

@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "tessera/core/parallel.hpp"
@@ -58,15 +59,19 @@ void append_block(Blocks3& dst, const Blocks3& src, size_t b) {
 size_t Blocks3::add(const Polyhedron& p, double density, int group_id, int material_id,
                     const std::vector<int>& face_tags) {
   const SolidProperties s = solid_properties(p);
-  // Convex: every vertex on the inner side of every face plane.
-  double size = 0.0;
-  for (const Vec3& v : p.vertices) size = std::max(size, (v - s.centroid).norm());
+  // Convex: every vertex on the inner side of every face plane, measured from the centroid,
+  // within the round-off of the block's size and of its coordinates (a vertex cut at a northing
+  // of 4e6 is off its plane by 1e-9 m).
+  double size = 0.0, far = 0.0;
+  for (const Vec3& v : p.vertices)
+    size = std::max(size, (v - s.centroid).norm()), far = std::max(far, v.cwiseAbs().maxCoeff());
+  const double slack = 1e-9 * size + 64.0 * std::numeric_limits<double>::epsilon() * far;
   std::vector<Vec3> normals;
   for (const auto& face : p.faces) {
     const Vec3 n = newell_normal(p.vertices, face);
-    const double off = n.dot(p.vertices[face[0]]);
+    const double off = n.dot(p.vertices[face[0]] - s.centroid);
     for (const Vec3& v : p.vertices)
-      if (n.dot(v) - off > 1e-9 * size)
+      if (n.dot(v - s.centroid) - off > slack)
         throw std::invalid_argument("the polyhedron is not convex (a vertex lies outside a face)");
     normals.push_back(n);
   }

@@ -1,9 +1,11 @@
 // Script commands that run the model and write results: step, solve, histories, output, state.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "tessera/core/parallel.hpp"
@@ -26,11 +28,35 @@ std::string progress_line(const Model& m, double elapsed) {
 }
 }  // namespace
 
+// How far the model's farthest block centroid lies from the origin along an axis (m).
+static double farthest_coordinate(const Model& m) {
+  double far = 0.0;
+  for (size_t b = 0; b < m.blocks.size(); ++b)
+    far = std::max({far, std::abs(m.blocks.x[b]), std::abs(m.blocks.y[b])});
+  for (const RigidBody3& body : m.blocks3.body)
+    far = std::max(far, body.position.cwiseAbs().maxCoeff());
+  return far;
+}
+
 void Interpreter::check_ready() {
   if (!overlap_checked_) {
     for (size_t b = 0; b < model_.blocks.size(); ++b) model_.blocks.update_world(b);
     run_checks(true);
     overlap_checked_ = true;
+  }
+  // Coordinates far from the origin round to more than the gaps the joints tell from shut (ten
+  // times the model's round-off gap): said once.
+  const double far = farthest_coordinate(model_);
+  const double quantum = far * std::numeric_limits<double>::epsilon();
+  if (!far_warned_ && quantum > 10.0 * model_.roundoff_gap()) {
+    far_warned_ = true;
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "the model lies %.3g m from the origin, where coordinates round to %.2g m, more "
+                  "than the joints' gaps can bear: it may not settle (ratio stalling, blocks "
+                  "creeping); give the coordinates from a local origin near the model",
+                  far, quantum);
+    warn(buf);
   }
 }
 

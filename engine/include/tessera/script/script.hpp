@@ -321,6 +321,7 @@ class Interpreter {
   int line_ = 0;
   int call_depth_ = 0;
   bool overlap_checked_ = false;
+  bool far_warned_ = false;  // that the model lies too far from the origin
   CheckLimits limits_;
   bool proceed_on_errors_ = false;
   std::atomic<bool>* stop_ = nullptr;
