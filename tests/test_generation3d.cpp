@@ -49,6 +49,23 @@ class TestGeneration3d : public QObject {
     QVERIFY(tagged > 0);
   }
 
+  // The same cuts at map coordinates (a northing of 4e6) as at the origin: the same blocks.
+  // Their convexity was judged in world coordinates, within a tolerance of the block's size
+  // only, and the cut was refused as "not convex" from a northing of 2e6.
+  void mapCoordinatesCutAsAtTheOrigin() {
+    const auto cut = [](const std::string& x, const std::string& y) {
+      ScriptRun r;
+      r.run(std::string(kHead) + "region " + x + "," + y + ",0 " + x + "+20," + y +
+            "+20,20 material=rock\njset dip=60 ddir=30 spacing=2 origin=" + x + "," + y +
+            ",0\njset dip=80 ddir=130 spacing=3 origin=" + x + "," + y + ",0\n");
+      return std::make_pair(r.model().blocks3.size(), total_volume(r.model()));
+    };
+    const auto [n0, v0] = cut("0", "0");
+    const auto [n1, v1] = cut("500000", "4000000");
+    QCOMPARE(n1, n0);
+    QVERIFY(std::abs(v0 - 8000.0) < 1e-9 * 8000.0 && std::abs(v1 - 8000.0) < 1e-6 * 8000.0);
+  }
+
   void aCutThroughVerticesLeavesNoSliver() {
     // The diagonal plane x = y through a cube's vertical edges: two equal prisms, nothing else.
     ScriptRun r;
