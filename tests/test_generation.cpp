@@ -42,7 +42,11 @@ std::string messages(ScriptRun& r, const std::string& text) {
   std::string log;
   r.interp = std::make_unique<Interpreter>(r.dir.path().toStdString(),
                                            [&](const std::string& s) { log += s + "\n"; });
-  r.run(text);
+  try {
+    r.run(text);
+  } catch (const ScriptError& e) {
+    log += std::string(e.what()) + "\n";
+  }
   return log;
 }
 }  // namespace
@@ -396,6 +400,20 @@ class TestGeneration : public QObject {
     ScriptRun go;
     go.run(std::string(kRock) + "region 0,0 0.015,0.015 material=rock\ncheck proceed\nstep 1");
     QCOMPARE(go.model().cycle, uint64_t(1));
+    // A check that finds an error stops the script there (a batch run exits 1), unless told to
+    // proceed.
+    ScriptRun stop;
+    try {
+      stop.run(std::string(kRock) + "region 0,0 0.015,0.015 material=rock\ncheck\nstep 1");
+      QFAIL("check went on past an error");
+    } catch (const ScriptError& e) {
+      QVERIFY2(std::string(e.what()).find("test:6: error: block 1") != std::string::npos &&
+                   std::string(e.what()).find("the script stops") != std::string::npos,
+               e.what());
+    }
+    QCOMPARE(stop.model().cycle, uint64_t(0));
+    ScriptRun listed;
+    listed.run(std::string(kRock) + "region 0,0 0.015,0.015 material=rock\ncheck proceed\ncheck");
   }
 };
 

@@ -294,14 +294,15 @@ void Interpreter::run_checks(bool before_run) {
       warn(f.text().substr(f.text().find(' ') + 1));
     if (f.error && !errors++) first_error = f.text();
   }
-  if (!before_run) {
+  if (!before_run)
     log("check: " + std::to_string(found.size()) + " finding(s), " + std::to_string(errors) +
         " error(s)");
-    return;
-  }
+  // An error stops the script here as it would stop the run (a batch run exits 1 and its
+  // summary says why), unless the user has said to proceed.
   if (errors && !proceed_on_errors_)
     fail(first_error + (errors > 1 ? " (and " + std::to_string(errors - 1) + " more)" : "") +
-         "; the run does not start (fix the model, or write 'check proceed' to run anyway)");
+         (before_run ? "; the run does not start" : "; the script stops") +
+         " (fix the model, or write 'check proceed' to go on anyway)");
 }
 
 }  // namespace tessera
