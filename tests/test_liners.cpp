@@ -114,6 +114,41 @@ class TestLiners : public QObject {
     QCOMPARE(r.model().liners.size(), size_t(0));
     QCOMPARE(r.model().histories.series[0].element, -1);
   }
+  // spacing= puts nodes between the wall's vertices, at most that far apart, each on the rock
+  // of its edge: the 24-gon's half has 12 edges of 0.261 m, each split in three.
+  void spacingPutsNodesBetweenTheVertices() {
+    ScriptRun r;
+    r.run(
+        "round 0.01\nmaterial define rock density=2500\n"
+        "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+        "region -5,-5 5,5 group=rock material=rock\n"
+        "tunnel circle centre=0,0 radius=1 segments=24 name=t group=t\ndelete group=t\n"
+        "fix all\nliner joints=t angles=0,180 ea=1e9 ei=1e6 kn=1e10 ks=1e10 spacing=0.1 "
+        "name=crown\nstep 10");
+    const Liners& L = r.model().liners;
+    QCOMPARE(L.size(), size_t(37));
+    const double edge = 2.0 * std::sin(7.5 * M_PI / 180.0);
+    double length = 0.0;
+    for (size_t i = 0; i < L.size(); ++i) {
+      length += L.length[i];
+      const double rad = L.pos0[i].norm();
+      QVERIFY(rad <= 1.0 + 1e-9 && rad >= std::cos(7.5 * M_PI / 180.0) - 1e-9);
+      if (i > 0) QVERIFY(std::abs((L.pos0[i] - L.pos0[i - 1]).norm() - edge / 3.0) < 1e-9);
+    }
+    QVERIFY(std::abs(length - 12.0 * edge) < 1e-9);
+    ScriptRun bad;
+    try {
+      bad.run(
+          "round 0.01\nmaterial define rock density=2500\n"
+          "joint define j kn=1e10 ks=1e10 friction=30\njoint assign j\n"
+          "region -5,-5 5,5 group=rock material=rock\n"
+          "tunnel circle centre=0,0 radius=1 segments=24 name=t group=t\ndelete group=t\n"
+          "liner joints=t ea=1e9 ei=1e6 kn=1e10 ks=1e10 spacing=0");
+      QFAIL("spacing=0 was taken");
+    } catch (const ScriptError& e) {
+      QVERIFY(std::string(e.what()).find("node spacing must be positive") != std::string::npos);
+    }
+  }
   // Rock settled before it is dug: blocks have moved along the joint the wall crosses, so the
   // wall's ends on either side are microns apart. The liner goes in (it was refused: "the wall
   // is broken between its edges", found by an independent check), as a closed ring on the

@@ -23,6 +23,9 @@ BoltProperties Interpreter::bolt_properties(Args& a) {
   take_num(a, "rupture", p.rupture);
   double row = 1.0;
   take_num(a, "rowspacing", row);
+  double spacing = 0.0;
+  if (take_num(a, "spacing", spacing) && !(spacing > 0.0))
+    fail("the liner's node spacing must be positive (leave it out: a node at each wall vertex)");
   if (!(p.ka > 0.0) || !(p.ks > 0.0)) fail("a bolt's stiffnesses ka and ks must be positive");
   if (p.tension < 0.0 || p.compression < 0.0 || p.shear < 0.0 || p.rupture < 0.0)
     fail("a bolt's yield forces and rupture displacement cannot be negative (0: none)");
@@ -234,6 +237,9 @@ void Interpreter::cmd_liner(Args& a) {
     p.mass = density * t;
   }
   take_num(a, "rowspacing", row);
+  double spacing = 0.0;
+  if (take_num(a, "spacing", spacing) && !(spacing > 0.0))
+    fail("the liner's node spacing must be positive (leave it out: a node at each wall vertex)");
   if (!(p.kn > 0.0) || p.ks < 0.0) fail("a liner's kn must be positive and ks zero or more");
   if (p.thrust < 0.0 || p.moment < 0.0 || p.tension < 0.0 || p.cohesion < 0.0 || p.friction < 0.0 ||
       p.mass < 0.0)
@@ -243,7 +249,8 @@ void Interpreter::cmd_liner(Args& a) {
   for (double* x : {&p.ea, &p.ei, &p.thrust, &p.moment, &p.mass}) *x /= row;
   a.words.clear();
   done(a);
-  const size_t n = install_liner(model_, name, static_cast<int>(it - tags.begin()), a0, a1, p);
+  const size_t n =
+      install_liner(model_, name, static_cast<int>(it - tags.begin()), a0, a1, p, spacing);
   log("liner '" + name + "': " + std::to_string(n) + " node(s)" +
       (model_.liners.liners.back().closed ? ", a closed ring" : ""));
 }

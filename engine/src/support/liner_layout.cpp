@@ -1,4 +1,5 @@
 // Placing a liner on an opening's wall, and keeping it through block deletion.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -9,7 +10,7 @@
 namespace tessera {
 
 size_t install_liner(Model& m, const std::string& name, int tag, double a0, double a1,
-                     const LinerProperties& props) {
+                     const LinerProperties& props, double spacing) {
   const OpeningWall wall = opening_wall(m, tag);
   const bool ring = a1 - a0 >= 360.0 - 1e-9;
   // The wall edges within the angles, in order about the opening.
@@ -45,6 +46,21 @@ size_t install_liner(Model& m, const std::string& name, int tag, double a0, doub
           << m.tolerance() << " m; is all of the opening excavated?)";
       throw ModelError(msg.str());
     }
+  }
+  // Nodes at most `spacing` apart: each wall edge split into equal pieces on its own rock.
+  if (spacing > 0.0) {
+    std::vector<WallEdge> pieces;
+    for (const WallEdge& e : edges) {
+      const int k =
+          std::max(1, static_cast<int>(std::ceil((e.to - e.from).norm() / spacing - 1e-9)));
+      for (int j = 0; j < k; ++j) {
+        WallEdge piece = e;
+        piece.from = e.from + (e.to - e.from) * (static_cast<double>(j) / k);
+        piece.to = j + 1 == k ? e.to : e.from + (e.to - e.from) * (static_cast<double>(j + 1) / k);
+        pieces.push_back(piece);
+      }
+    }
+    edges = std::move(pieces);
   }
   // A node at each vertex, on the rock of the edge that starts there (the last: the one ending).
   const size_t n = ring ? edges.size() : edges.size() + 1;

@@ -89,9 +89,10 @@ inline Vec2 liner_position(const Liners& L, size_t i) {
 }
 
 // Lines the wall of the excavated opening `tag` between angles a0 and a1 (degrees about its
-// centre; the whole wall, a closed ring, when they span 360): a node at every wall vertex.
+// centre; the whole wall, a closed ring, when they span 360): a node at every wall vertex, and
+// with `spacing` more between them, at most that far apart.
 size_t install_liner(Model& m, const std::string& name, int tag, double a0, double a1,
-                     const LinerProperties& props);
+                     const LinerProperties& props, double spacing = 0.0);
 // After blocks are deleted: a liner whose rock is gone goes.
 void remap_liners(Model& m, const std::vector<int>& map, const std::vector<int64_t>& node_map);
 
