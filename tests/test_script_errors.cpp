@@ -402,7 +402,7 @@ class TestScriptErrors : public QObject {
     QVERIFY(has(error_of(blk + "figure a.jpg"), "test:5: 'a.jpg': a figure is written as .png"));
     QVERIFY(has(error_of(blk + "figure a.png colour=displacment"),
                 "not something blocks are coloured by (did you mean 'displacement'?)"));
-    QVERIFY(has(error_of(blk + "figure a.png contacts=forces"), "(did you mean 'force'?)"));
+    QVERIFY(has(error_of(blk + "figure a.png contacts=stres"), "(did you mean 'stress'?)"));
     QVERIFY(has(error_of(blk + "figure a.png window=1,1,0,0"), "second corner"));
     QVERIFY(has(error_of(blk + "figure a.png size=4,4"), "between 16 and 16384"));
     QVERIFY(has(error_of(blk + "figure a.png"), "this run has no renderer"));

@@ -260,20 +260,26 @@ void add_blocks(const Snapshot& s, const ViewOptions& o, Scene& out) {
     out.polygons.push_back(block_polygon(s, b, o.magnify, colours[b]));
 }
 
-// Contact bars along the joint: width from the normal force, colour from the option.
+// Contact bars along the joint: width from the normal stress, colour from the option.
 void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double size) {
   if (o.contacts == ContactShow::kOff || s.contacts.empty()) return;
+  // A contact's normal stress (MPa): its force over its length (2D) or area (3D: 4 length^2).
+  const auto stress = [&](const SnapshotContact& c) {
+    const double extent = s.three ? 4.0 * c.length * c.length : c.length;
+    return extent > 0.0 ? std::max(c.fn, 0.0) / extent * 1e-6 : 0.0;
+  };
   double fmax = 0, smax = 0;
-  std::vector<double> forces;
+  std::vector<double> stresses;
   for (const auto& c : s.contacts) {
-    fmax = std::max(fmax, c.fn), smax = std::max(smax, std::abs(c.shear_disp));
-    if (c.fn > 0) forces.push_back(c.fn);
+    const double sn = stress(c);
+    fmax = std::max(fmax, sn), smax = std::max(smax, std::abs(c.shear_disp));
+    if (sn > 0) stresses.push_back(sn);
   }
-  // Full width at the 98th percentile of the forces, so one spike does not thin all the rest.
+  // Full width at the 98th percentile of the stresses, so one spike does not thin all the rest.
   double fwide = fmax;
-  if (forces.size() > 50) {
-    const auto k = forces.begin() + static_cast<std::ptrdiff_t>(0.98 * double(forces.size()));
-    std::nth_element(forces.begin(), k, forces.end());
+  if (stresses.size() > 50) {
+    const auto k = stresses.begin() + static_cast<std::ptrdiff_t>(0.98 * double(stresses.size()));
+    std::nth_element(stresses.begin(), k, stresses.end());
     fwide = *k;
   }
   double mean_length = 0;
@@ -290,12 +296,10 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
                  {"bonded", bonded_colour()}};
   } else {
     L.continuous = true;
-    L.title = o.contacts == ContactShow::kForce
-                  ? (s.three ? "normal force [N]" : "normal force [N/m]")
-                  : "shear displacement [m]";
-    // Forces coloured to the 98th percentile, as the widths (the largest is in the caption).
-    L.lo = 0, L.hi = o.contacts == ContactShow::kForce ? fwide : smax;
-    L.clipped = o.contacts == ContactShow::kForce && fwide < fmax, L.max = fmax;
+    L.title = o.contacts == ContactShow::kStress ? "normal stress [MPa]" : "shear displacement [m]";
+    // Stresses coloured to the 98th percentile, as the widths (the largest is in the caption).
+    L.lo = 0, L.hi = o.contacts == ContactShow::kStress ? fwide : smax;
+    L.clipped = o.contacts == ContactShow::kStress && fwide < fmax, L.max = fmax;
     if (L.hi <= 0) L.hi = 1;
   }
   for (size_t i = 0; i < s.contacts.size(); ++i) {
@@ -307,12 +311,12 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
                : c.flags & kSlipping ? slipping_colour()
                : c.flags & kBonded   ? bonded_colour()
                                      : elastic_colour();
-    else if (o.contacts == ContactShow::kForce)
-      colour = ramp(c.fn / L.hi);
+    else if (o.contacts == ContactShow::kStress)
+      colour = ramp(stress(c) / L.hi);
     else
       colour = ramp(std::abs(c.shear_disp) / L.hi);
     const double w =
-        touching && fmax > 0 ? wmin + (wmax - wmin) * std::max(c.fn, 0.0) / fmax : wmin;
+        touching && fwide > 0 ? wmin + (wmax - wmin) * std::min(stress(c) / fwide, 1.0) : wmin;
     // Along the stretch of joint the contact stands for; a lone contact gets a short bar.
     Vec2 a = c.from, b = c.to;
     if ((b - a).norm() < 2.0 * wmin) {
@@ -335,10 +339,9 @@ void add_contacts(const Snapshot& s, const ViewOptions& o, Scene& out, double si
     bar.corners[3] = a + 0.5 * w * c.normal;
     out.bars.push_back(bar);
   }
-  const std::string unit = s.three ? " N" : " N/m";
   out.caption +=
-      "   contact width" + std::string(o.contacts == ContactShow::kForce ? " and colour" : "") +
-      ": normal force, full at " + number(fwide) + unit + " (largest " + number(fmax) + ")";
+      "   contact width" + std::string(o.contacts == ContactShow::kStress ? " and colour" : "") +
+      ": normal stress, full at " + number(fwide) + " MPa (largest " + number(fmax) + ")";
 }
 
 // Displacement arrows at block centroids, the longest a tenth of the model's size (3D: in

@@ -11,7 +11,7 @@ const std::vector<std::string>& colour_by_names() {
 }
 
 const std::vector<std::string>& contact_show_names() {
-  static const std::vector<std::string> names{"off", "state", "force", "shear"};
+  static const std::vector<std::string> names{"off", "state", "stress", "shear"};
   return names;
 }
 
@@ -29,6 +29,8 @@ bool parse_colour_by(const std::string& word, ColourBy& c) {
 }
 
 bool parse_contact_show(const std::string& word, ContactShow& c) {
+  // `force`: the name before the bars showed stress (a script of then draws the same picture).
+  if (word == "force") return c = ContactShow::kStress, true;
   return parse_name(contact_show_names(), word, c);
 }
 

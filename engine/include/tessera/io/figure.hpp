@@ -39,8 +39,10 @@ inline bool colours_zones(ColourBy c) {
   return c >= ColourBy::kSxx;
 }
 // How contacts are drawn: not at all, coloured by state (open, slipping, elastic), by normal
-// force, or by joint shear displacement. Widths always scale with normal force.
-enum class ContactShow : int { kOff, kState, kForce, kShear };
+// stress, or by joint shear displacement. Widths always scale with the normal stress: each bar
+// spans the stretch of joint its contact stands for, so its area is the force, however the
+// joint's length is shared among its contacts (two corners meeting at one point share it).
+enum class ContactShow : int { kOff, kState, kStress, kShear };
 
 const std::vector<std::string>& colour_by_names();
 const std::vector<std::string>& contact_show_names();
