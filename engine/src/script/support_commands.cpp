@@ -23,9 +23,6 @@ BoltProperties Interpreter::bolt_properties(Args& a) {
   take_num(a, "rupture", p.rupture);
   double row = 1.0;
   take_num(a, "rowspacing", row);
-  double spacing = 0.0;
-  if (take_num(a, "spacing", spacing) && !(spacing > 0.0))
-    fail("the liner's node spacing must be positive (leave it out: a node at each wall vertex)");
   if (!(p.ka > 0.0) || !(p.ks > 0.0)) fail("a bolt's stiffnesses ka and ks must be positive");
   if (p.tension < 0.0 || p.compression < 0.0 || p.shear < 0.0 || p.rupture < 0.0)
     fail("a bolt's yield forces and rupture displacement cannot be negative (0: none)");
