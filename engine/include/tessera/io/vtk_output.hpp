@@ -25,8 +25,8 @@ class VtkSeries {
  private:
   void write_collection(const std::string& name, size_t first = 0, const char* ext = "vtp") const;
   std::string dir_;
-  std::vector<double> times_;   // of every snapshot written
-  std::vector<size_t> listed_;  // the snapshots the collections list, their times rising
+  std::vector<double> times_;      // of every snapshot written
+  std::vector<size_t> listed_;     // the snapshots the collections list, their times rising
   int zones_from_ = -1;            // first snapshot with zones
   int support_from_ = -1;          // first snapshot with bolts
   const char* zones_ext_ = "vtp";  // 2D zones are PolyData, 3D zones an UnstructuredGrid (.vtu)
