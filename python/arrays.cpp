@@ -422,6 +422,10 @@ void bind_arrays(py::module_& m) {
           "values",
           [](const HistoryGroup& g) {
             const Histories& h = g.model().histories;
+            // No histories: (rows, 0), still two-dimensional.
+            if (h.columns() == 0)
+              return py::array(py::dtype::of<double>(),
+                               std::vector<py::ssize_t>{static_cast<py::ssize_t>(h.rows()), 0});
             return view(h.values.empty() ? nullptr : h.values.data(), h.rows(), h.columns(),
                         h.columns() * sizeof(double), g.owner);
           },

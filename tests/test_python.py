@@ -300,6 +300,13 @@ class Commands(unittest.TestCase):
         self.assertEqual((tessera.BONDED, tessera.SLIPPING, tessera.TOUCHING, tessera.BROKEN),
                          (1, 2, 4, 8))
 
+    def test_histories_without_any_are_two_dimensional(self):
+        with tessera.Model(out=os.path.join(OUT, "no_histories"), quiet=True) as m:
+            m.command(INCLINE)
+            m.cycle(5)
+            self.assertEqual(m.histories.values.ndim, 2)
+            self.assertEqual(m.histories.values.shape[1], 0)
+
     def test_finish_writes_results(self):
         out = os.path.join(OUT, "finished")
         with tessera.Model(out=out, quiet=True, threads=1) as m:
