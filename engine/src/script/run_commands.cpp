@@ -46,9 +46,10 @@ void Interpreter::check_ready() {
   }
   // Coordinates far from the origin round to more than the gaps the joints tell from shut (ten
   // times the model's round-off gap): said once.
+  if (far_warned_) return;
   const double far = farthest_coordinate(model_);
   const double quantum = far * std::numeric_limits<double>::epsilon();
-  if (!far_warned_ && quantum > 10.0 * model_.roundoff_gap()) {
+  if (quantum > 10.0 * model_.roundoff_gap()) {
     far_warned_ = true;
     char buf[400];
     std::snprintf(buf, sizeof buf,

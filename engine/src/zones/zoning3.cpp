@@ -352,7 +352,6 @@ void snap_to_faces(ZoneMesh3& mesh, const std::vector<std::vector<Half>>& halves
 // (ZoningStopped), and so does a budget of cells treated (ExudeSpent), counted, not timed, so
 // that every machine gets the same mesh; CGAL's exuder can cycle on a bad mesh without end.
 struct ExudeSpent {};
-template <class C3t3>
 struct ExuderBudget {
   const std::atomic<bool>* stop;
   size_t* left;
@@ -367,13 +366,13 @@ struct ExuderBudget {
 template <class C3t3>
 bool exude(C3t3& c3t3, size_t cells, const std::atomic<bool>* stop) {
   using Criterion = CGAL::Mesh_3::Min_dihedral_angle_criterion<typename C3t3::Triangulation>;
-  using Exuder = CGAL::Mesh_3::Slivers_exuder<C3t3, Criterion, ExuderBudget<C3t3>>;
+  using Exuder = CGAL::Mesh_3::Slivers_exuder<C3t3, Criterion, ExuderBudget>;
   Criterion criterion(0.0, c3t3.triangulation());
   Exuder exuder(c3t3, criterion);
   exuder.set_time_limit(0);
   size_t left = cells;
   try {
-    exuder(ExuderBudget<C3t3>{stop, &left});
+    exuder(ExuderBudget{stop, &left});
   } catch (const ExudeSpent&) {
     return false;
   }
